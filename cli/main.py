@@ -1,0 +1,59 @@
+"""Entry point of the ``robotmodel`` console script.
+
+Each subcommand lives in its own module exposing ``register(subparsers)``, which adds
+a parser (with its ROS spelling as an alias) and sets ``func`` to a callable taking the
+parsed namespace and returning an exit code. Errors the library raises on purpose
+(:class:`robotmodel.errors.RobotModelError`) are printed as one line and give exit 1;
+anything else is a bug and keeps its traceback.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+from collections.abc import Sequence
+
+from robotmodel.errors import RobotModelError
+
+# Order here is the order of `robotmodel --help`.
+COMMAND_MODULES: tuple[str, ...] = (
+    "robotmodel.cli.demo_cmd",
+    "robotmodel.cli.xacro_cmd",
+    "robotmodel.cli.check_cmd",
+    "robotmodel.cli.graphviz_cmd",
+    "robotmodel.cli.fk_cmd",
+)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """Build the top-level parser with every subcommand registered."""
+    parser = argparse.ArgumentParser(
+        prog="robotmodel",
+        description="ROS's robot-model and transform tools without ROS.",
+    )
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+    sub.required = True
+    for name in COMMAND_MODULES:
+        importlib.import_module(name).register(sub)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run the command line; returns the process exit code."""
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    try:
+        code: int = args.func(args)
+    except RobotModelError as exc:
+        print(f"robotmodel {args.command}: error: {exc}", file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        return 130
+    except BrokenPipeError:
+        return 0
+    return code
+
+
+if __name__ == "__main__":
+    sys.exit(main())

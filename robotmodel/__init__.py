@@ -1,0 +1,16 @@
+"""robotmodel: ROS's robot-model and transform toolchain without ROS.
+
+Subpackages, one concern each:
+
+- :mod:`robotmodel.xacro`: xacro expansion with ROS-free package resolution.
+- :mod:`robotmodel.model`: the typed robot description (URDF in, URDF out).
+- :mod:`robotmodel.check`: check_urdf, lint and urdf_to_graphviz.
+- :mod:`robotmodel.kinematics`: forward kinematics on Pinocchio.
+- :mod:`robotmodel.spatial`: rotations and rigid transforms.
+- :mod:`robotmodel.tf`: a tf2-style transform buffer.
+"""
+
+from __future__ import annotations
+
+__version__ = "0.1.0"
+__all__ = ["__version__"]

@@ -1,0 +1,108 @@
+"""The single exception tree of robotmodel.
+
+Every error the library raises on purpose derives from :class:`RobotModelError`, so a
+caller (and the CLI) can catch one class and print one line. The tree::
+
+    RobotModelError
+    ├── XacroError                  xacro expansion failed (file, line when known)
+    │   ├── PackageNotFoundError    $(find pkg) / package:// could not be resolved
+    │   └── UntrustedInputError     --untrusted refused $(env), an outside include, ...
+    ├── URDFError                   the URDF is not a valid robot description
+    │   └── URDFParseError          malformed XML or a malformed element
+    ├── KinematicsError             a kinematic model could not be built or evaluated
+    │   └── JointValueError         unknown joint, wrong length, NaN/inf, out of limits
+    └── TransformException          tf2's root (see robotmodel.tf)
+        ├── LookupException
+        ├── ConnectivityException
+        ├── ExtrapolationException
+        ├── InvalidArgumentException
+        └── TimeoutException
+
+Messages are built before raising and name the offending file, element, joint or
+frame. The TF classes carry structured fields as well as tf2's text.
+"""
+
+from __future__ import annotations
+
+__all__ = [
+    "ConnectivityException",
+    "ExtrapolationException",
+    "InvalidArgumentException",
+    "JointValueError",
+    "KinematicsError",
+    "LookupException",
+    "PackageNotFoundError",
+    "RobotModelError",
+    "TimeoutException",
+    "TransformException",
+    "URDFError",
+    "URDFParseError",
+    "UntrustedInputError",
+    "XacroError",
+]
+
+
+class RobotModelError(Exception):
+    """Root of every error robotmodel raises on purpose."""
+
+
+class XacroError(RobotModelError):
+    """xacro expansion failed; the message names the file and, when known, the line."""
+
+
+class PackageNotFoundError(XacroError):
+    """A ROS package named by ``$(find pkg)`` or ``package://pkg`` was not found."""
+
+    def __init__(self, package: str, searched: list[str]) -> None:
+        self.package = package
+        self.searched = searched
+        where = ", ".join(searched) if searched else "nowhere (no search roots)"
+        super().__init__(f"package '{package}' not found; searched: {where}")
+
+
+class UntrustedInputError(XacroError):
+    """In untrusted mode, the input asked for something that is refused."""
+
+
+class URDFError(RobotModelError):
+    """The robot description is not valid (names the element at fault)."""
+
+
+class URDFParseError(URDFError):
+    """The URDF XML is malformed, or one of its elements is."""
+
+
+class KinematicsError(RobotModelError):
+    """A kinematic model could not be built or evaluated."""
+
+
+class JointValueError(KinematicsError):
+    """A joint value is unknown, non-finite, of the wrong size, or out of limits."""
+
+    def __init__(self, message: str, joint: str | None = None) -> None:
+        self.joint = joint
+        super().__init__(message)
+
+
+class TransformException(RobotModelError):
+    """Root of tf2's exceptions (tf2.TransformException)."""
+
+
+class LookupException(TransformException):
+    """A frame does not exist in the buffer."""
+
+
+class ConnectivityException(TransformException):
+    """The frames exist but are not connected in one tree."""
+
+
+class ExtrapolationException(TransformException):
+    """The requested time is outside the buffered data."""
+
+
+class InvalidArgumentException(TransformException):
+    """An argument is malformed (empty frame, leading '/', NaN, ...)."""
+
+
+class TimeoutException(TransformException):
+    """A lookup with a timeout expired before the transform became available."""

@@ -1,0 +1,51 @@
+"""The typed robot description: parse URDF into immutable values, and write it back."""
+
+from __future__ import annotations
+
+from robotmodel.model._types import (
+    RGBA,
+    Box,
+    Collision,
+    Cylinder,
+    Dynamics,
+    Geometry,
+    Inertia,
+    Inertial,
+    Joint,
+    JointType,
+    Limit,
+    Link,
+    Material,
+    Mesh,
+    Mimic,
+    Pose,
+    RobotDescription,
+    SafetyController,
+    Sphere,
+    Vec3,
+    Visual,
+)
+
+__all__ = [
+    "RGBA",
+    "Box",
+    "Collision",
+    "Cylinder",
+    "Dynamics",
+    "Geometry",
+    "Inertia",
+    "Inertial",
+    "Joint",
+    "JointType",
+    "Limit",
+    "Link",
+    "Material",
+    "Mesh",
+    "Mimic",
+    "Pose",
+    "RobotDescription",
+    "SafetyController",
+    "Sphere",
+    "Vec3",
+    "Visual",
+]
