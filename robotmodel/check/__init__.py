@@ -1,0 +1,1 @@
+"""robotmodel.check (being built)."""

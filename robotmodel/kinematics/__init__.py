@@ -1,0 +1,1 @@
+"""robotmodel.kinematics (being built)."""

@@ -1,0 +1,1 @@
+"""robotmodel.spatial (being built)."""

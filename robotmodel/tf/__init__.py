@@ -1,0 +1,1 @@
+"""robotmodel.tf (being built)."""

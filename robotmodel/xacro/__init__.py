@@ -1,0 +1,1 @@
+"""robotmodel.xacro (being built)."""
