@@ -167,7 +167,7 @@ class Limit:
 
 @dataclass(frozen=True, slots=True)
 class Mimic:
-    """This joint's value = multiplier × value of ``joint`` + offset."""
+    """Mimicry of another joint: value = multiplier × value of ``joint`` + offset."""
 
     joint: str
     multiplier: float = 1.0
