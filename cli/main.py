@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import logging
 import sys
 from collections.abc import Sequence
 
@@ -20,9 +21,6 @@ from robotmodel.errors import RobotModelError
 COMMAND_MODULES: tuple[str, ...] = (
     "robotmodel.cli.demo_cmd",
     "robotmodel.cli.xacro_cmd",
-    "robotmodel.cli.check_cmd",
-    "robotmodel.cli.graphviz_cmd",
-    "robotmodel.cli.fk_cmd",
 )
 
 
@@ -41,12 +39,14 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; returns the process exit code."""
+    logging.basicConfig(format="%(message)s", level=logging.WARNING)
     parser = build_parser()
     args = parser.parse_args(argv)
     try:
         code: int = args.func(args)
     except RobotModelError as exc:
-        print(f"robotmodel {args.command}: error: {exc}", file=sys.stderr)
+        # One line, always: collapse any newlines a wrapped library message carries.
+        print(f"robotmodel {args.command}: error: {' '.join(str(exc).split())}", file=sys.stderr)
         return 1
     except KeyboardInterrupt:
         return 130

@@ -1,0 +1,175 @@
+"""Child-process side of xacro expansion (run as ``python -m robotmodel.xacro._worker``).
+
+xacro 2.1.1 keeps global state, patches minidom for the whole process, calls
+``sys.exit`` on errors and has no guard against runaway expansion. Running it in a
+child process with an address-space limit contains all of that; the parent enforces
+the wall-clock limit. The request arrives as JSON on stdin; the URDF text goes to
+stdout, and on failure one JSON line ``{"error": ...}`` goes to stderr with exit 3.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+import resource
+import sys
+from pathlib import Path
+from typing import Any
+
+from robotmodel.errors import RobotModelError, UntrustedInputError
+from robotmodel.xacro._packages import find_package, resolve_uri
+
+EXIT_ERROR = 3
+
+
+def _clean(message: str) -> str:
+    """One line; drop xacro's ``<class '...'>:`` prefix and its doubled messages."""
+    text = " ".join(message.split())
+    text = re.sub(r"<class '[\w.]+'>: ", "", text)
+    half = len(text) // 2
+    if len(text) % 2 == 1 and text[:half] == text[half + 1 :]:
+        text = text[:half]
+    return text.strip()
+
+
+class _Guard:
+    """Package roots an untrusted input may read from."""
+
+    def __init__(self, input_file: Path | None, package_paths: list[str]) -> None:
+        self.roots: list[Path] = [Path(p).resolve() for p in package_paths]
+        if input_file is not None:
+            folder = input_file.resolve().parent
+            own = next((a for a in [folder, *folder.parents] if (a / "package.xml").is_file()), folder)
+            self.roots.append(own)
+
+    def allow(self, root: Path) -> None:
+        self.roots.append(root.resolve())
+
+    def check(self, path: str, what: str) -> None:
+        resolved = Path(path).resolve()
+        if not any(resolved.is_relative_to(r) for r in self.roots):
+            raise UntrustedInputError(
+                f"untrusted input: {what} of '{path}' is outside the input's package roots "
+                f"({', '.join(str(r) for r in self.roots)})"
+            )
+
+
+def _install_hooks(req: dict[str, Any]) -> None:
+    import xacro
+    from xacro import substitution_args as sa
+
+    package_paths: list[str] = req["package_paths"]
+    input_file = Path(req["path"]) if req.get("path") else None
+    start = input_file if input_file is not None else Path(req.get("base_dir") or ".")
+    untrusted: bool = req["untrusted"]
+    guard = _Guard(input_file, package_paths)
+
+    def find(pkg: str) -> str:
+        found = find_package(pkg, start=start, package_paths=package_paths)
+        if untrusted:
+            guard.allow(found)
+        return str(found)
+
+    # xacro binds `find` in two places: the $(find) substitution and the eval dict.
+    sa._eval_find = find
+    sa._eval_dict["find"] = find
+    xacro._global_symbols.setdefault("find", find)
+
+    original_abs = xacro.abs_filename_spec
+
+    def abs_filename_spec(spec: str) -> str:
+        if spec.startswith(("package://", "file://")):
+            resolved = resolve_uri(spec, base_dir=start.parent if input_file else start,
+                                   package_paths=package_paths)
+            if untrusted and spec.startswith("package://"):
+                guard.allow(resolved.parent)
+            path = str(resolved)
+        else:
+            path = str(original_abs(spec))
+        if untrusted:
+            guard.check(path, "include/load_yaml")
+        return path
+
+    # get_include_files and load_yaml look the module global up at call time.
+    xacro.abs_filename_spec = abs_filename_spec
+    if untrusted:
+
+        def refuse_env(*args: object, **kwargs: object) -> str:
+            raise UntrustedInputError("untrusted input: $(env)/$(optenv) are refused")
+
+        sa._eval_env = refuse_env
+        sa._eval_optenv = refuse_env
+        sa._eval_dict["env"] = refuse_env
+        sa._eval_dict["optenv"] = refuse_env
+
+
+def _location() -> str:
+    import xacro
+
+    macros = [m.body.getAttribute("name") for m in (xacro.macrostack or [])]
+    files = [f or "string" for f in (xacro.filestack or [])]
+    parts = []
+    if macros:
+        parts.append("in macro " + " <- ".join(reversed(macros)))
+    if files:
+        parts.append("in file " + " <- ".join(reversed(files)))
+    return f" ({'; '.join(parts)})" if parts else ""
+
+
+def _expand(req: dict[str, Any]) -> str:
+    import xml.parsers.expat
+
+    import xacro
+
+    mappings = dict(req["args"])
+    try:
+        if req.get("path"):
+            doc = xacro.process_file(req["path"], mappings=mappings)
+        else:
+            xacro.init_stacks(None)
+            doc = xacro.parse(req["text"])
+            xacro.process_doc(doc, mappings=mappings)
+        return str(doc.toprettyxml(indent="  "))
+    except xml.parsers.expat.ExpatError as exc:
+        raise _Failure(f"XML parsing error: {exc}{_location()}") from None
+    except RecursionError:
+        raise _Failure(
+            f"runaway recursion (a macro or property that refers to itself?){_location()}"
+        ) from None
+    except MemoryError:
+        raise _Failure(f"expansion exceeded the memory limit{_location()}") from None
+    except RobotModelError as exc:
+        raise _Failure(f"{_clean(str(exc))}{_location()}") from None
+    except Exception as exc:
+        wrapped = getattr(exc, "exc", None)
+        cause = wrapped if isinstance(wrapped, RobotModelError) else exc
+        raise _Failure(f"{_clean(str(cause) or repr(cause))}{_location()}") from None
+
+
+class _Failure(Exception):
+    pass
+
+
+def main() -> int:
+    """Read one request from stdin, expand it, write the URDF to stdout."""
+    req = json.load(sys.stdin)
+    limit = int(req["memory_bytes"])
+    resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+    if req.get("cwd"):
+        os.chdir(req["cwd"])
+    try:
+        _install_hooks(req)
+        out = _expand(req)
+    except _Failure as exc:
+        sys.stderr.write(json.dumps({"error": str(exc)}) + "\n")
+        return EXIT_ERROR
+    except MemoryError:
+        sys.stderr.write(json.dumps({"error": "expansion exceeded the memory limit"}) + "\n")
+        return EXIT_ERROR
+    sys.stdout.write(out)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
