@@ -21,6 +21,8 @@ from robotmodel.errors import RobotModelError
 COMMAND_MODULES: tuple[str, ...] = (
     "robotmodel.cli.demo_cmd",
     "robotmodel.cli.xacro_cmd",
+    "robotmodel.cli.check_cmd",
+    "robotmodel.cli.graphviz_cmd",
 )
 
 

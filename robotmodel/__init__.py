@@ -12,5 +12,19 @@ Subpackages, one concern each:
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING, Any
+
 __version__ = "0.1.0"
-__all__ = ["__version__"]
+__all__ = ["RobotDescription", "__version__", "load"]
+
+if TYPE_CHECKING:
+    from robotmodel.model import RobotDescription, load
+
+
+def __getattr__(name: str) -> Any:
+    # Lazy, so `python -m robotmodel.xacro._worker` starts without importing the model stack.
+    if name in ("load", "RobotDescription"):
+        from robotmodel import model
+
+        return getattr(model, name)
+    raise AttributeError(f"module 'robotmodel' has no attribute '{name}'")

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from robotmodel.model._load import load
+from robotmodel.model._parse import parse_urdf
 from robotmodel.model._types import (
     RGBA,
     Box,
@@ -25,6 +27,7 @@ from robotmodel.model._types import (
     Vec3,
     Visual,
 )
+from robotmodel.model._write import to_urdf
 
 __all__ = [
     "RGBA",
@@ -48,4 +51,7 @@ __all__ = [
     "Sphere",
     "Vec3",
     "Visual",
+    "load",
+    "parse_urdf",
+    "to_urdf",
 ]

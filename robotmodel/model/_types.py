@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from enum import Enum
+from functools import cached_property
 
 Vec3 = tuple[float, float, float]
 RGBA = tuple[float, float, float, float]
@@ -221,5 +222,68 @@ class RobotDescription:
     links: tuple[Link, ...]
     joints: tuple[Joint, ...]
     materials: tuple[Material, ...] = ()
-    urdf: str = ""
-    source: str | None = None
+    urdf: str = field(default="", repr=False, compare=False)
+    source: str | None = field(default=None, compare=False)
+
+    @cached_property
+    def _links(self) -> dict[str, Link]:
+        return {link.name: link for link in self.links}
+
+    @cached_property
+    def _joints(self) -> dict[str, Joint]:
+        return {joint.name: joint for joint in self.joints}
+
+    @cached_property
+    def _parent_joints(self) -> dict[str, Joint]:
+        return {joint.child: joint for joint in self.joints}
+
+    @cached_property
+    def _child_joints(self) -> dict[str, tuple[Joint, ...]]:
+        grouped: dict[str, list[Joint]] = {}
+        for joint in self.joints:
+            grouped.setdefault(joint.parent, []).append(joint)
+        # urdfdom keeps joints in a map keyed by name, so children come in joint-name order.
+        return {k: tuple(sorted(v, key=lambda j: j.name)) for k, v in grouped.items()}
+
+    @cached_property
+    def root(self) -> str:
+        """The root link: the one link that is no joint's child."""
+        roots = sorted(name for name in self._links if name not in self._parent_joints)
+        return roots[0]
+
+    def link(self, name: str) -> Link:
+        """The link called ``name`` (KeyError naming it otherwise)."""
+        try:
+            return self._links[name]
+        except KeyError:
+            raise KeyError(f"robot '{self.name}' has no link '{name}'") from None
+
+    def joint(self, name: str) -> Joint:
+        """The joint called ``name`` (KeyError naming it otherwise)."""
+        try:
+            return self._joints[name]
+        except KeyError:
+            raise KeyError(f"robot '{self.name}' has no joint '{name}'") from None
+
+    def child_joints(self, link: str) -> tuple[Joint, ...]:
+        """Joints whose parent is ``link``, in joint-name order (as urdfdom lists them)."""
+        return self._child_joints.get(link, ())
+
+    def parent_joint(self, link: str) -> Joint | None:
+        """The joint whose child is ``link``; None for the root."""
+        return self._parent_joints.get(link)
+
+    @property
+    def movable_joints(self) -> tuple[Joint, ...]:
+        """Joints with a degree of freedom, in document order."""
+        return tuple(j for j in self.joints if j.type.is_movable)
+
+    def walk(self) -> list[tuple[int, Joint]]:
+        """Depth-first pre-order (depth, joint) pairs from the root, children in joint-name order."""
+        order: list[tuple[int, Joint]] = []
+        stack = [(1, j) for j in reversed(self.child_joints(self.root))]
+        while stack:
+            depth, joint = stack.pop()
+            order.append((depth, joint))
+            stack.extend((depth + 1, j) for j in reversed(self.child_joints(joint.child)))
+        return order

@@ -5,7 +5,8 @@ Search order (closest first), as a ROS user expects from ``$(find pkg)``:
 1. explicit package paths (``--package-path``), each a package or a folder of packages;
 2. the input file's own tree: each ancestor folder, nearest first, crawled a few levels
    down for a ``package.xml`` whose ``<name>`` matches (so a repository's own copy of a
-   package wins over a same-named one elsewhere);
+   package wins over a same-named one elsewhere), or holding an ament resource index
+   that names it (an install prefix);
 3. ``ROS_PACKAGE_PATH`` (ROS 1), crawled;
 4. ``AMENT_PREFIX_PATH`` (ROS 2 ament resource index);
 5. colcon ``install/`` trees beside the input's ancestors and the working directory.
@@ -132,7 +133,8 @@ def find_package(
     start_path = Path(start).resolve() if start is not None else None
     if start_path is not None:
         for anc in _ancestors(start_path):
-            found = _in_crawl(name, anc, _ANCESTOR_DEPTH)
+            # An installed package lives in <prefix>/share/<pkg>, indexed by its prefix.
+            found = _in_crawl(name, anc, _ANCESTOR_DEPTH) or _from_ament(name, [str(anc)])
             if found:
                 return found
         searched.append(f"the tree of {start_path}")

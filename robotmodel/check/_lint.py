@@ -1,0 +1,146 @@
+"""Physical and referential lint of a robot description, beyond what urdfdom checks."""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass
+from enum import Enum
+from pathlib import Path
+
+import numpy as np
+
+from robotmodel.errors import RobotModelError
+from robotmodel.model import Inertial, JointType, Mesh, RobotDescription
+from robotmodel.xacro import resolve_uri
+
+__all__ = ["Finding", "Severity", "lint"]
+
+# Inertia checks tolerate rounding in hand-written URDFs: relative to the largest moment.
+_REL_TOL = 1e-9
+
+
+class Severity(Enum):
+    """How bad a finding is: errors fail the check, warnings only with ``--strict``."""
+
+    ERROR = "error"
+    WARNING = "warning"
+
+
+@dataclass(frozen=True, slots=True)
+class Finding:
+    """One problem found: a stable ``code``, the element it is about, and a message."""
+
+    code: str
+    severity: Severity
+    element: str
+    message: str
+
+    def __str__(self) -> str:
+        return f"{self.severity.value}: [{self.code}] {self.element}: {self.message}"
+
+
+def _moving_links(desc: RobotDescription) -> set[str]:
+    moving: set[str] = set()
+    for _, joint in desc.walk():
+        if joint.type.is_movable or joint.parent in moving:
+            moving.add(joint.child)
+    return moving
+
+
+def _inertia_findings(name: str, inertial: Inertial) -> Iterator[Finding]:
+    i = inertial.inertia
+    tensor = np.array([[i.ixx, i.ixy, i.ixz], [i.ixy, i.iyy, i.iyz], [i.ixz, i.iyz, i.izz]])
+    moments = np.linalg.eigvalsh(tensor)
+    scale = max(float(np.abs(moments).max()), 1e-300)
+    element = f"link [{name}]"
+    if moments.min() <= 0.0 or moments.min() < -_REL_TOL * scale:
+        yield Finding("inertia-not-positive-definite", Severity.WARNING, element,
+                      f"inertia is not positive definite (principal moments {np.array2string(moments)})")
+        return
+    a, b, c = sorted(float(m) for m in moments)
+    if a + b < c * (1.0 - _REL_TOL):
+        yield Finding("inertia-triangle-inequality", Severity.WARNING, element,
+                      f"principal moments {a:.6g}, {b:.6g}, {c:.6g} violate the triangle inequality "
+                      "(no rigid body has them)")
+
+
+def _mesh_uris(desc: RobotDescription) -> Iterator[tuple[str, str]]:
+    for link in desc.links:
+        for geometry in [v.geometry for v in link.visuals] + [c.geometry for c in link.collisions]:
+            if isinstance(geometry, Mesh):
+                yield link.name, geometry.filename
+
+
+def lint(
+    desc: RobotDescription,
+    *,
+    base_dir: str | os.PathLike[str] | None = None,
+    package_paths: Sequence[str | os.PathLike[str]] = (),
+) -> list[Finding]:
+    """All lint findings for ``desc``; mesh URIs resolve against ``base_dir`` and ``package_paths``."""
+    findings: list[Finding] = []
+    joint_names = {j.name for j in desc.joints}
+    for joint in desc.joints:
+        element = f"joint [{joint.name}]"
+        if joint.mimic is not None and joint.mimic.joint not in joint_names:
+            findings.append(Finding("mimic-missing-joint", Severity.ERROR, element,
+                                    f"mimics joint [{joint.mimic.joint}], which does not exist"))
+        limit = joint.limit
+        if limit is None or joint.type not in (JointType.REVOLUTE, JointType.PRISMATIC, JointType.CONTINUOUS):
+            continue
+        if limit.lower is not None and limit.upper is not None and limit.lower > limit.upper:
+            findings.append(Finding("limit-lower-above-upper", Severity.WARNING, element,
+                                    f"lower limit {limit.lower:g} is above upper limit {limit.upper:g}"))
+        if limit.effort <= 0.0:
+            findings.append(Finding("limit-zero-effort", Severity.WARNING, element,
+                                    f"effort limit is {limit.effort:g}; the joint cannot be driven"))
+        if limit.velocity <= 0.0:
+            findings.append(Finding("limit-zero-velocity", Severity.WARNING, element,
+                                    f"velocity limit is {limit.velocity:g}; the joint cannot move"))
+    moving = _moving_links(desc)
+    for link in desc.links:
+        element = f"link [{link.name}]"
+        inertial = link.inertial
+        if inertial is not None:
+            if inertial.mass < 0.0 or (inertial.mass == 0.0 and link.name in moving):
+                findings.append(Finding("mass-not-positive", Severity.WARNING, element,
+                                        f"mass is {inertial.mass:g} on a body that moves"))
+            if inertial.mass > 0.0:
+                findings.extend(_inertia_findings(link.name, inertial))
+    findings.extend(_massless_moving_bodies(desc))
+    defined = {m.name for m in desc.materials}
+    for link in desc.links:
+        for visual in link.visuals:
+            mat = visual.material
+            if mat is not None and mat.color is None and mat.texture is None and mat.name not in defined:
+                findings.append(Finding("material-undefined", Severity.WARNING, f"link [{link.name}]",
+                                        f"material '{mat.name}' is used but never defined"))
+    base = Path(base_dir) if base_dir is not None else Path.cwd()
+    for link_name, uri in _mesh_uris(desc):
+        try:
+            path = resolve_uri(uri, base_dir=base, package_paths=package_paths)
+        except RobotModelError as exc:
+            findings.append(Finding("mesh-not-found", Severity.WARNING, f"link [{link_name}]",
+                                    f"mesh '{uri}' does not resolve: {exc}"))
+            continue
+        if not path.is_file():
+            findings.append(Finding("mesh-not-found", Severity.WARNING, f"link [{link_name}]",
+                                    f"mesh '{uri}' resolves to {path}, which does not exist"))
+    return findings
+
+
+def _massless_moving_bodies(desc: RobotDescription) -> Iterator[Finding]:
+    """A movable joint must move some mass: its child plus everything fixed to it."""
+    for joint in desc.movable_joints:
+        body = [joint.child]
+        stack = [joint.child]
+        while stack:
+            for j in desc.child_joints(stack.pop()):
+                if j.type is JointType.FIXED:
+                    body.append(j.child)
+                    stack.append(j.child)
+        if all(desc.link(n).inertial is None for n in body):
+            yield Finding("moving-link-without-inertial", Severity.WARNING, f"link [{joint.child}]",
+                          f"moves with joint [{joint.name}] but neither it nor anything fixed to it "
+                          "has an <inertial>")
