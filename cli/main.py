@@ -47,8 +47,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         code: int = args.func(args)
     except RobotModelError as exc:
-        # One line, always: collapse any newlines a wrapped library message carries.
-        print(f"robotmodel {args.command}: error: {' '.join(str(exc).split())}", file=sys.stderr)
+        # One line, always: join any lines a wrapped library message carries.
+        print(f"robotmodel {args.command}: error: {' '.join(str(exc).splitlines())}", file=sys.stderr)
         return 1
     except KeyboardInterrupt:
         return 130
