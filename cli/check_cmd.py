@@ -10,8 +10,9 @@ from typing import Any
 
 from robotmodel.cli._common import add_model_arguments, split_mappings
 
-from robotmodel.check import Severity, lint, tree_report
-from robotmodel.model import load
+from robotmodel.check import Finding, Severity, lint, tree_report
+from robotmodel.errors import RobotModelError, URDFParseError
+from robotmodel.model import RobotDescription, load
 
 
 def register(sub: Any) -> None:
@@ -19,28 +20,49 @@ def register(sub: Any) -> None:
     parser: argparse.ArgumentParser = sub.add_parser(
         "check-urdf", aliases=["check_urdf"],
         help="parse and check a URDF/xacro; prints the tree as urdfdom's check_urdf does",
-        description="Check a URDF (or xacro) file. On success stdout is exactly check_urdf's; "
-        "lint warnings follow on stderr.",
+        description="Check a URDF (or xacro) file ('-' reads stdin). On success stdout is exactly "
+        "check_urdf's and lint warnings follow on stderr; on failure stdout is empty and the exit "
+        "code is 1.",
     )
     add_model_arguments(parser)
     parser.add_argument("--strict", action="store_true", help="treat lint warnings as errors")
-    parser.add_argument("--format", choices=("text", "json"), default="text", help="output format")
+    parser.add_argument("--format", choices=("text", "json"), default="text",
+                        help="json: robot, root, tree and findings (with codes) on stdout")
     parser.set_defaults(func=run)
+
+
+def _load(args: argparse.Namespace) -> tuple[RobotDescription, Path]:
+    mappings = split_mappings(args.mappings)
+    if args.file == "-":
+        text = sys.stdin.read()
+        if not text.lstrip().startswith("<"):
+            raise URDFParseError("<stdin>: empty document or not XML")
+        desc = load(text, mappings, package_paths=args.package_path, untrusted=args.untrusted)
+        return desc, Path.cwd()
+    desc = load(args.file, mappings, package_paths=args.package_path, untrusted=args.untrusted)
+    return desc, Path(args.file).resolve().parent
+
+
+def _finding_json(f: Finding) -> dict[str, str]:
+    return {"code": f.code, "severity": f.severity.value, "element": f.element, "message": f.message}
 
 
 def run(args: argparse.Namespace) -> int:
     """Check the file; exit 0 when valid (and, with --strict, warning-free)."""
-    mappings = split_mappings(args.mappings)
-    if args.file == "-":
-        desc = load(sys.stdin.read(), mappings, package_paths=args.package_path, untrusted=args.untrusted)
-        base_dir = Path.cwd()
-    else:
-        desc = load(args.file, mappings, package_paths=args.package_path, untrusted=args.untrusted)
-        base_dir = Path(args.file).resolve().parent
+    try:
+        desc, base_dir = _load(args)
+    except RobotModelError as exc:
+        if args.format != "json":
+            raise
+        print(json.dumps({"ok": False, "error": " ".join(str(exc).splitlines())}, indent=2))
+        return 1
     findings = lint(desc, base_dir=base_dir, package_paths=args.package_path)
-    failed = any(f.severity is Severity.ERROR for f in findings) or (args.strict and bool(findings))
+    if args.strict:
+        findings = [Finding(f.code, Severity.ERROR, f.element, f.message) for f in findings]
+    failed = any(f.severity is Severity.ERROR for f in findings)
     if args.format == "json":
         report = {
+            "ok": not failed,
             "robot": desc.name,
             "root": desc.root,
             "links": len(desc.links),
@@ -49,16 +71,14 @@ def run(args: argparse.Namespace) -> int:
                 {"depth": depth, "joint": j.name, "type": j.type.value, "parent": j.parent, "child": j.child}
                 for depth, j in desc.walk()
             ],
-            "findings": [
-                {"code": f.code, "severity": f.severity.value, "element": f.element, "message": f.message}
-                for f in findings
-            ],
-            "ok": not failed,
+            "findings": [_finding_json(f) for f in findings],
         }
         print(json.dumps(report, indent=2))
-    else:
+        return 1 if failed else 0
+    # As check_urdf: the tree goes to stdout only when the check passes.
+    if not failed:
         sys.stdout.write(tree_report(desc))
         sys.stdout.flush()
-        for finding in findings:
-            print(finding, file=sys.stderr)
+    for finding in findings:
+        print(f"robotmodel {args.command}: {finding}", file=sys.stderr)
     return 1 if failed else 0

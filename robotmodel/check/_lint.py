@@ -40,21 +40,72 @@ class Finding:
         return f"{self.severity.value}: [{self.code}] {self.element}: {self.message}"
 
 
-def _moving_links(desc: RobotDescription) -> set[str]:
-    moving: set[str] = set()
-    for _, joint in desc.walk():
-        if joint.type.is_movable or joint.parent in moving:
-            moving.add(joint.child)
-    return moving
+def _body(desc: RobotDescription, link: str) -> list[str]:
+    """``link`` and every link welded to it by fixed joints below it: one rigid body."""
+    body = [link]
+    stack = [link]
+    while stack:
+        for j in desc.child_joints(stack.pop()):
+            if j.type is JointType.FIXED:
+                body.append(j.child)
+                stack.append(j.child)
+    return body
+
+
+def _mass_findings(desc: RobotDescription) -> Iterator[Finding]:
+    for link in desc.links:
+        inertial = link.inertial
+        if inertial is None:
+            continue
+        if inertial.mass < 0.0:
+            yield Finding("mass-not-positive", Severity.WARNING, f"link [{link.name}]",
+                          f"mass is {inertial.mass:g}")
+        elif inertial.mass > 0.0:
+            yield from _inertia_findings(link.name, inertial)
+    # A zero-mass frame welded to a massive link is normal (tool0, ee_link); a body that
+    # a movable joint drives must weigh something, or dynamics divides by zero.
+    for joint in desc.movable_joints:
+        inertials = [i for n in _body(desc, joint.child) if (i := desc.link(n).inertial) is not None]
+        if inertials and sum(i.mass for i in inertials) == 0.0:
+            yield Finding("mass-not-positive", Severity.WARNING, f"link [{joint.child}]",
+                          f"mass is 0 on a body moved by joint [{joint.name}]")
+
+
+def _material_findings(desc: RobotDescription) -> Iterator[Finding]:
+    # As urdfdom: a material given a colour or texture inside a visual becomes defined
+    # for the links that come after it in the document.
+    defined = {m.name for m in desc.materials}
+    for link in desc.links:
+        for visual in link.visuals:
+            mat = visual.material
+            if mat is None:
+                continue
+            if mat.color is not None or mat.texture is not None:
+                defined.add(mat.name)
+            elif mat.name not in defined:
+                yield Finding("material-undefined", Severity.WARNING, f"link [{link.name}]",
+                              f"material '{mat.name}' is used but never defined")
+
+
+def _resolve_mesh(uri: str, base: Path, package_paths: Sequence[str | os.PathLike[str]]) -> Path:
+    if uri.startswith("package:///"):
+        # No package name: Pinocchio joins the rest to each package directory, and real
+        # files rely on it (example-robot-data's talos_full_v2); search the file's parents.
+        rest = uri[len("package:///"):]
+        roots = [Path(p) for p in package_paths] + [base, *base.parents]
+        for root in roots:
+            if (root / rest).is_file():
+                return root / rest
+        return base / rest
+    return resolve_uri(uri, base_dir=base, package_paths=package_paths)
 
 
 def _inertia_findings(name: str, inertial: Inertial) -> Iterator[Finding]:
     i = inertial.inertia
     tensor = np.array([[i.ixx, i.ixy, i.ixz], [i.ixy, i.iyy, i.iyz], [i.ixz, i.iyz, i.izz]])
     moments = np.linalg.eigvalsh(tensor)
-    scale = max(float(np.abs(moments).max()), 1e-300)
     element = f"link [{name}]"
-    if moments.min() <= 0.0 or moments.min() < -_REL_TOL * scale:
+    if moments.min() <= 0.0:
         yield Finding("inertia-not-positive-definite", Severity.WARNING, element,
                       f"inertia is not positive definite (principal moments {np.array2string(moments)})")
         return
@@ -98,31 +149,21 @@ def lint(
         if limit.velocity <= 0.0:
             findings.append(Finding("limit-zero-velocity", Severity.WARNING, element,
                                     f"velocity limit is {limit.velocity:g}; the joint cannot move"))
-    moving = _moving_links(desc)
-    for link in desc.links:
-        element = f"link [{link.name}]"
-        inertial = link.inertial
-        if inertial is not None:
-            if inertial.mass < 0.0 or (inertial.mass == 0.0 and link.name in moving):
-                findings.append(Finding("mass-not-positive", Severity.WARNING, element,
-                                        f"mass is {inertial.mass:g} on a body that moves"))
-            if inertial.mass > 0.0:
-                findings.extend(_inertia_findings(link.name, inertial))
+    findings.extend(_mass_findings(desc))
     findings.extend(_massless_moving_bodies(desc))
-    defined = {m.name for m in desc.materials}
-    for link in desc.links:
-        for visual in link.visuals:
-            mat = visual.material
-            if mat is not None and mat.color is None and mat.texture is None and mat.name not in defined:
-                findings.append(Finding("material-undefined", Severity.WARNING, f"link [{link.name}]",
-                                        f"material '{mat.name}' is used but never defined"))
+    findings.extend(_material_findings(desc))
     base = Path(base_dir) if base_dir is not None else Path.cwd()
+    resolved: dict[str, Path | str] = {}
     for link_name, uri in _mesh_uris(desc):
-        try:
-            path = resolve_uri(uri, base_dir=base, package_paths=package_paths)
-        except RobotModelError as exc:
+        if uri not in resolved:
+            try:
+                resolved[uri] = _resolve_mesh(uri, base, package_paths)
+            except RobotModelError as exc:
+                resolved[uri] = str(exc)
+        path = resolved[uri]
+        if isinstance(path, str):
             findings.append(Finding("mesh-not-found", Severity.WARNING, f"link [{link_name}]",
-                                    f"mesh '{uri}' does not resolve: {exc}"))
+                                    f"mesh '{uri}' does not resolve: {path}"))
             continue
         if not path.is_file():
             findings.append(Finding("mesh-not-found", Severity.WARNING, f"link [{link_name}]",
@@ -133,14 +174,7 @@ def lint(
 def _massless_moving_bodies(desc: RobotDescription) -> Iterator[Finding]:
     """A movable joint must move some mass: its child plus everything fixed to it."""
     for joint in desc.movable_joints:
-        body = [joint.child]
-        stack = [joint.child]
-        while stack:
-            for j in desc.child_joints(stack.pop()):
-                if j.type is JointType.FIXED:
-                    body.append(j.child)
-                    stack.append(j.child)
-        if all(desc.link(n).inertial is None for n in body):
+        if all(desc.link(n).inertial is None for n in _body(desc, joint.child)):
             yield Finding("moving-link-without-inertial", Severity.WARNING, f"link [{joint.child}]",
                           f"moves with joint [{joint.name}] but neither it nor anything fixed to it "
                           "has an <inertial>")

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import os
-import re
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 
@@ -13,9 +12,6 @@ from robotmodel.model._types import RobotDescription
 from robotmodel.xacro import expand, expand_string
 
 __all__ = ["load"]
-
-# A document with none of these is plain URDF: xacro would only reformat it.
-_XACRO_MARKERS = re.compile(r"xacro|\$\{|\$\(")
 
 
 def load(
@@ -27,22 +23,18 @@ def load(
 ) -> RobotDescription:
     """Load a robot from a ``.urdf``/``.xacro`` path, or from XML text (a str starting with ``<``).
 
-    Documents using xacro (including ``.urdf`` files that are really xacro) are expanded
-    with ``args`` (``name:=value`` mappings) first; see :func:`robotmodel.xacro.expand`.
+    The document always goes through :func:`robotmodel.xacro.expand` (many ``.urdf``
+    files are really xacro documents) with ``args`` (``name:=value`` mappings), then
+    :func:`parse_urdf`. Relative includes in XML text resolve against the working
+    directory. Raises :class:`robotmodel.errors.XacroError` if expansion fails and
+    :class:`robotmodel.errors.URDFError` if the result is not a valid robot.
     """
     if isinstance(source, str) and source.lstrip().startswith("<"):
-        text = source
-        if args or _XACRO_MARKERS.search(text):
-            text = expand_string(text, args, package_paths=package_paths, untrusted=untrusted)
+        text = expand_string(source, args, package_paths=package_paths, untrusted=untrusted)
         return parse_urdf(text)
     path = Path(source)
-    try:
-        raw = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise URDFError(f"{path}: no such file") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise URDFError(f"{path}: cannot read: {exc}") from None
-    text = raw
-    if args or _XACRO_MARKERS.search(raw):
-        text = expand(path, args, package_paths=package_paths, untrusted=untrusted)
+    if not path.is_file():
+        what = "is a directory, not a URDF file" if path.is_dir() else "no such file"
+        raise URDFError(f"{path}: {what}")
+    text = expand(path, args, package_paths=package_paths, untrusted=untrusted)
     return parse_urdf(text, source=str(path))
