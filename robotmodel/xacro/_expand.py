@@ -10,7 +10,7 @@ import sys
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 
-from robotmodel.errors import XacroError
+from robotmodel.errors import PackageNotFoundError, UntrustedInputError, XacroError
 from robotmodel.xacro._packages import PathLike
 
 __all__ = ["DEFAULT_MEMORY_BYTES", "DEFAULT_TIMEOUT_S", "expand", "expand_string"]
@@ -98,9 +98,11 @@ def _run(
             f"{label}: expansion did not finish within {timeout:g} s (runaway macro recursion or expansion?)"
         ) from None
     error = None
+    reply: dict[str, object] = {}
     for line in proc.stderr.splitlines():
         if line.startswith('{"error"'):
-            error = json.loads(line)["error"]
+            reply = json.loads(line)
+            error = str(reply["error"])
         elif line.strip():
             _log.warning("%s", line)
     if proc.returncode == 0:
@@ -111,4 +113,10 @@ def _run(
             error = f"expansion exceeded the memory limit of {memory_bytes >> 20} MiB"
         else:
             error = tail[0]
+    if reply.get("kind") == "UntrustedInputError":
+        raise UntrustedInputError(f"{label}: {error}")
+    if reply.get("kind") == "PackageNotFoundError":
+        searched = reply.get("searched")
+        where = list(searched) if isinstance(searched, list) else []
+        raise PackageNotFoundError(str(reply["package"]), where)
     raise XacroError(f"{label}: {error}")

@@ -140,15 +140,44 @@ def _expand(req: dict[str, Any]) -> str:
     except MemoryError:
         raise _Failure(f"expansion exceeded the memory limit{_location()}") from None
     except RobotModelError as exc:
-        raise _Failure(f"{_clean(str(exc))}{_location()}") from None
+        raise _Failure(f"{_clean(str(exc))}{_location()}", exc) from None
     except Exception as exc:
-        wrapped = getattr(exc, "exc", None)
-        cause = wrapped if isinstance(wrapped, RobotModelError) else exc
-        raise _Failure(f"{_clean(str(cause) or repr(cause))}{_location()}") from None
+        # xacro wraps errors (XacroException.exc); a runaway shows only in the wrapped cause.
+        if _caused_by(exc, MemoryError):
+            raise _Failure(f"expansion exceeded the memory limit{_location()}") from None
+        if _caused_by(exc, RecursionError):
+            raise _Failure(
+                f"runaway recursion (a macro or property that refers to itself?){_location()}"
+            ) from None
+        ours = _find_cause(exc, RobotModelError)
+        if isinstance(ours, RobotModelError):
+            raise _Failure(f"{_clean(str(ours))}{_location()}", ours) from None
+        raise _Failure(f"{_clean(str(exc) or repr(exc))}{_location()}") from None
 
 
 class _Failure(Exception):
-    pass
+    def __init__(self, message: str, cause: RobotModelError | None = None) -> None:
+        super().__init__(message)
+        self.kind = type(cause).__name__ if cause is not None else "XacroError"
+        self.package = getattr(cause, "package", None)
+        self.searched = getattr(cause, "searched", None)
+
+
+def _find_cause(exc: BaseException, kind: type[BaseException]) -> BaseException | None:
+    seen: set[int] = set()
+    current: BaseException | None = exc
+    while current is not None and id(current) not in seen:
+        if isinstance(current, kind):
+            return current
+        seen.add(id(current))
+        wrapped = getattr(current, "exc", None)
+        nxt = wrapped if isinstance(wrapped, BaseException) else None
+        current = nxt or current.__cause__ or current.__context__
+    return None
+
+
+def _caused_by(exc: BaseException, kind: type[BaseException]) -> bool:
+    return _find_cause(exc, kind) is not None
 
 
 def main() -> int:
@@ -162,7 +191,8 @@ def main() -> int:
         _install_hooks(req)
         out = _expand(req)
     except _Failure as exc:
-        sys.stderr.write(json.dumps({"error": str(exc)}) + "\n")
+        reply = {"error": str(exc), "kind": exc.kind, "package": exc.package, "searched": exc.searched}
+        sys.stderr.write(json.dumps(reply) + "\n")
         return EXIT_ERROR
     except MemoryError:
         sys.stderr.write(json.dumps({"error": "expansion exceeded the memory limit"}) + "\n")
