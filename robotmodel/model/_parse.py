@@ -55,9 +55,19 @@ def _vec(text: str, n: int, what: str) -> tuple[float, ...]:
     parts = text.split()
     if len(parts) != n:
         raise URDFParseError(
-            f"{what}: parser found {len(parts)} elements but {n} expected while parsing vector [{text}]"
+            f"{what}: Parser found {len(parts)} elements but {n} expected while parsing vector [{text}]"
         )
-    return tuple(_num(p, what) for p in parts)
+    values = []
+    for part in parts:
+        try:
+            values.append(float(part))
+        except ValueError:
+            raise URDFParseError(
+                f"{what}: Unable to parse component [{part}] to a double (while parsing a vector value)"
+            ) from None
+        if not math.isfinite(values[-1]):
+            raise URDFParseError(f"{what}: value [{part}] is not a finite number")
+    return tuple(values)
 
 
 def _vec3(text: str, what: str) -> Vec3:
@@ -291,7 +301,7 @@ def _robot(robot: ET.Element, text: str, source: str | None) -> RobotDescription
         mat = _material(elem, f"material [{elem.get('name', '')}]")
         if not mat.name:
             raise URDFParseError("material without a name")
-        if mat.name in materials and materials[mat.name] != mat:
+        if mat.name in materials:
             raise URDFError(f"material '{mat.name}' is not unique.")
         materials[mat.name] = mat
     links: dict[str, Link] = {}
