@@ -9,6 +9,7 @@ rejected here, so every RobotDescription is a valid tree.
 from __future__ import annotations
 
 import math
+import re
 import xml.etree.ElementTree as ET
 
 from robotmodel.errors import URDFError, URDFParseError
@@ -41,9 +42,20 @@ __all__ = ["parse_urdf"]
 _TYPES = {t.value: t for t in JointType}
 
 
+# Python's float() also takes "1_000" and non-ASCII digits, which no C++ URDF parser does.
+_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?|[+-]?(?:nan|inf|infinity)",
+                     re.IGNORECASE | re.ASCII)
+
+
+def _float(text: str) -> float:
+    if not _NUMBER.fullmatch(text.strip()):
+        raise ValueError(text)
+    return float(text)
+
+
 def _num(text: str, what: str) -> float:
     try:
-        value = float(text)
+        value = _float(text)
     except ValueError:
         raise URDFParseError(f"{what}: unable to parse [{text}] as a number") from None
     if not math.isfinite(value):
@@ -60,7 +72,7 @@ def _vec(text: str, n: int, what: str) -> tuple[float, ...]:
     values = []
     for part in parts:
         try:
-            values.append(float(part))
+            values.append(_float(part))
         except ValueError:
             raise URDFParseError(
                 f"{what}: Unable to parse component [{part}] to a double (while parsing a vector value)"
@@ -218,11 +230,10 @@ def _joint(elem: ET.Element, version: tuple[int, int]) -> Joint:
         raise URDFError(f"Joint [{name}] is missing a parent and/or child link specification.")
     axis: Vec3 = (1.0, 0.0, 0.0)
     axis_elem = elem.find("axis")
-    if axis_elem is not None:
-        axis = _vec3(axis_elem.get("xyz", "1 0 0"), f"Malformed axis element for joint [{name}]")
-        if jtype in (JointType.REVOLUTE, JointType.CONTINUOUS, JointType.PRISMATIC, JointType.PLANAR) and (
-            axis == (0.0, 0.0, 0.0)
-        ):
+    # As urdfdom: fixed and floating joints have no axis; an <axis/> without xyz is zero.
+    if axis_elem is not None and jtype not in (JointType.FIXED, JointType.FLOATING):
+        axis = _vec3(axis_elem.get("xyz", "0 0 0"), f"Malformed axis element for joint [{name}]")
+        if axis == (0.0, 0.0, 0.0):
             raise URDFError(f"joint [{name}] has a zero axis")
     mimic = None
     mim = elem.find("mimic")
@@ -283,6 +294,12 @@ def parse_urdf(text: str, *, source: str | None = None) -> RobotDescription:
         robot = ET.fromstring(text)
     except ET.ParseError as exc:
         raise URDFParseError(f"{label}: malformed XML: {exc}") from None
+    if robot.tag.startswith("{"):
+        # tinyxml (urdfdom) ignores namespaces, so <robot xmlns="..."> is a robot.
+        namespace = robot.tag[: robot.tag.index("}") + 1]
+        for elem in robot.iter():
+            if isinstance(elem.tag, str) and elem.tag.startswith(namespace):
+                elem.tag = elem.tag[len(namespace) :]
     try:
         return _robot(robot, text, source)
     except URDFError as exc:

@@ -14,6 +14,7 @@ from pathlib import Path
 import pytest
 from conftest import CHECK_URDF_BIN, urdfdom_env
 
+from robotmodel.check import tree_report
 from robotmodel.errors import URDFError
 from robotmodel.model import parse_urdf
 
@@ -84,6 +85,8 @@ URDFDOM_REJECTS = [
      "Unable to parse component [nan]"),
     ("inf-effort", _robot(AB + _joint("revolute", '<limit effort="inf" velocity="1"/>')),
      "limit of joint [j]: value [inf] is not a finite number", "effort value (inf) is not a valid float"),
+    ("underscore-number", _robot(AB + _joint(inner='<origin xyz="1_0 0 0"/>')),
+     "Unable to parse component [1_0]", "Unable to parse component [1_0]"),
     ("mimic-without-joint", _robot(AB + _joint("continuous", "<mimic/>")),
      "mimic element of joint [j] has no joint attribute", "no mimic joint specified"),
     ("version-2.0", _robot('<link name="a"/>', 'name="r" version="2.0"'),
@@ -112,6 +115,7 @@ BEYOND_URDFDOM = [
             + _joint(name="j3", parent="b", child="c")),
      "link [c] has two parent joints, [j2] and [j3]"),
     ("zero-axis", _robot(AB + _joint("continuous", '<axis xyz="0 0 0"/>')), "joint [j] has a zero axis"),
+    ("axis-without-xyz", _robot(AB + _joint("continuous", "<axis/>")), "joint [j] has a zero axis"),
     ("nan-inertia",
      _robot('<link name="a"><inertial><mass value="1"/>'
             '<inertia ixx="nan" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link>'),
@@ -176,3 +180,12 @@ def test_valid_limit_variants_accepted_like_urdfdom(tmp_path: Path) -> None:
     assert limit is not None
     assert (limit.lower, limit.upper) == (None, None)
     assert _urdfdom(text, tmp_path).returncode == 0
+
+
+def test_accepted_like_urdfdom(tmp_path: Path) -> None:
+    # A default namespace on <robot>, and a malformed axis on a fixed joint (urdfdom never reads it).
+    for text in (_robot(AB + _joint(), 'xmlns="http://example.org/urdf" name="r"'),
+                 _robot(AB + _joint(inner='<axis xyz="0 x"/>'))):
+        ref = _urdfdom(text, tmp_path)
+        assert ref.returncode == 0
+        assert tree_report(parse_urdf(text)) == ref.stdout
