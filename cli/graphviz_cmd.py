@@ -12,7 +12,7 @@ from typing import Any
 
 from robotmodel.cli._common import add_model_arguments, split_mappings, write_atomic
 
-from robotmodel.check import graphviz
+from robotmodel.check import to_graphviz
 from robotmodel.errors import RobotModelError
 from robotmodel.model import load
 
@@ -38,7 +38,7 @@ def run(args: argparse.Namespace) -> int:
     desc = load(args.file, split_mappings(words), package_paths=args.package_path, untrusted=args.untrusted)
     base = output or desc.name
     gv = Path(f"{base}.gv")
-    write_atomic(gv, graphviz(desc))
+    write_atomic(gv, to_graphviz(desc))
     print(f"Created file {gv}")
     dot = shutil.which("dot")
     if dot is None:

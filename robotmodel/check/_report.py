@@ -6,7 +6,7 @@ import math
 
 from robotmodel.model import RobotDescription, Vec3
 
-__all__ = ["graphviz", "tree_report", "urdfdom_rpy"]
+__all__ = ["to_graphviz", "tree_report", "urdfdom_rpy"]
 
 
 def tree_report(desc: RobotDescription) -> str:
@@ -57,7 +57,7 @@ def _g(value: float) -> str:
     return f"{value:g}"
 
 
-def graphviz(desc: RobotDescription) -> str:
+def to_graphviz(desc: RobotDescription) -> str:
     """The .gv text urdfdom's ``urdf_to_graphviz`` writes, byte for byte."""
     out = ["digraph G {", "node [shape=box];"]
     out.append(f'"{desc.root}" [label="{desc.root}"];')

@@ -11,7 +11,7 @@ import pytest
 from conftest import CORPUS, URDF_TO_GRAPHVIZ_BIN, urdfdom_env
 from manifest import entries
 
-from robotmodel.check import graphviz, tree_report
+from robotmodel.check import to_graphviz, tree_report
 from robotmodel.model import load, parse_urdf, to_urdf
 
 ENTRIES = entries(CORPUS) if CORPUS.is_dir() else []
@@ -28,5 +28,5 @@ def test_graphviz_and_round_trip(entry, tmp_path: Path) -> None:  # type: ignore
     env["PATH"] = "/nonexistent"  # the .gv only; urdfdom would otherwise also run dot
     subprocess.run([str(URDF_TO_GRAPHVIZ_BIN), str(expanded), "ref"], capture_output=True, env=env,
                    cwd=tmp_path, check=True)
-    assert graphviz(desc) == (tmp_path / "ref.gv").read_text(encoding="utf-8")
+    assert to_graphviz(desc) == (tmp_path / "ref.gv").read_text(encoding="utf-8")
     assert parse_urdf(to_urdf(desc)) == desc

@@ -13,7 +13,7 @@ from pathlib import Path
 
 from conftest import URDF_TO_GRAPHVIZ_BIN, urdfdom_env
 
-from robotmodel.check import graphviz
+from robotmodel.check import to_graphviz
 from robotmodel.model import parse_urdf
 
 SPECIAL = [0.0, -0.0, math.pi, -math.pi, math.pi / 2, -math.pi / 2, 1.5707963, -1.57079632679, 3.14159265359,
@@ -49,7 +49,7 @@ def test_awkward_origins_match_urdfdom(tmp_path: Path) -> None:
     subprocess.run([str(URDF_TO_GRAPHVIZ_BIN), str(path), "ref"], capture_output=True, env=env, cwd=tmp_path,
                    check=True)
     expected = (tmp_path / "ref.gv").read_text().splitlines()
-    ours = graphviz(parse_urdf(path.read_text())).splitlines()
+    ours = to_graphviz(parse_urdf(path.read_text())).splitlines()
     assert len(ours) == len(expected)
     mismatches = [(a, b) for a, b in zip(ours, expected, strict=True) if a != b]
     assert mismatches == []

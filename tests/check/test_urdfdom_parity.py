@@ -13,7 +13,7 @@ import pytest
 from conftest import CHECK_URDF_BIN, ERD_ROBOTS, URDF_TO_GRAPHVIZ_BIN, erd_urdfs, urdfdom_env
 from robotmodel.cli.main import main
 
-from robotmodel.check import graphviz, lint
+from robotmodel.check import lint, to_graphviz
 from robotmodel.model import Mesh, parse_urdf
 
 ROBOTS = erd_urdfs()
@@ -65,7 +65,7 @@ def test_graphviz_matches_urdfdom(path: Path, tmp_path: Path) -> None:
     subprocess.run([str(URDF_TO_GRAPHVIZ_BIN), str(path), "ref"], capture_output=True, env=env,
                    cwd=tmp_path, check=True)
     desc = parse_urdf(path.read_text(encoding="utf-8"))
-    assert graphviz(desc) == (tmp_path / "ref.gv").read_text(encoding="utf-8")
+    assert to_graphviz(desc) == (tmp_path / "ref.gv").read_text(encoding="utf-8")
 
 
 @pytest.mark.parametrize("path", [p for p in ROBOTS if _id(p) not in (EMPTY_ROBOT, ABSENT_MESHES)], ids=_id)
