@@ -21,8 +21,10 @@ def register(sub: Any) -> None:
         "check-urdf", aliases=["check_urdf"],
         help="parse and check a URDF/xacro; prints the tree as urdfdom's check_urdf does",
         description="Check a URDF (or xacro) file ('-' reads stdin). On success stdout is exactly "
-        "check_urdf's and lint warnings follow on stderr; on failure stdout is empty and the exit "
-        "code is 1.",
+        "check_urdf's and lint warnings follow on stderr; on failure stdout is empty, one line per "
+        "problem goes to stderr and the exit code is 1 (urdfdom exits 255). Beyond urdfdom it rejects "
+        "partial cycles, links with two parents, self-joints, zero axes, NaN/inf and mimics of "
+        "missing joints.",
     )
     add_model_arguments(parser)
     parser.add_argument("--strict", action="store_true", help="treat lint warnings as errors")

@@ -22,10 +22,18 @@ def register(sub: Any) -> None:
     parser: argparse.ArgumentParser = sub.add_parser(
         "urdf-to-graphviz", aliases=["urdf_to_graphviz"],
         help="write the link/joint tree as OUTPUT.gv and OUTPUT.pdf (urdfdom's layout)",
-        description="Write $ROBOT_NAME.gv and .pdf in the current directory, or OUTPUT.gv and OUTPUT.pdf.",
+        description="Write $ROBOT_NAME.gv and .pdf in the current directory, or OUTPUT.gv and OUTPUT.pdf. "
+        "The .gv is byte-identical to urdfdom's urdf_to_graphviz. Unlike urdfdom, the PDF is only "
+        "reported as created when graphviz's dot actually made it.",
     )
     add_model_arguments(parser)
     parser.set_defaults(func=run)
+    # urdfdom's form is `urdf_to_graphviz FILE [OUTPUT]`: OUTPUT arrives as the first
+    # word of the name:=value list (see run); say so in the usage line.
+    for action in parser._actions:
+        if action.dest == "mappings":
+            action.metavar = "[OUTPUT] name:=value"
+            action.help = "output base name (default: the robot's name), then xacro arguments"
 
 
 def run(args: argparse.Namespace) -> int:
