@@ -1,0 +1,76 @@
+"""Rigid transforms named by frame pair.
+
+Convention, used everywhere in robotmodel: ``T_parent_child`` maps a point expressed in
+``child`` into ``parent``: p_parent = T_parent_child · p_child. Composition chains the
+names: T_a_c = T_a_b @ T_b_c.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+
+from robotmodel.spatial._rotations import (
+    FloatArray,
+    matrix_to_quat,
+    matrix_to_rpy,
+    quat_multiply,
+    quat_to_matrix,
+    rpy_to_quat,
+)
+
+__all__ = ["Transform"]
+
+Vec3 = tuple[float, float, float]
+Quat = tuple[float, float, float, float]
+
+
+@dataclass(frozen=True, slots=True)
+class Transform:
+    """A rigid transform: ``translation`` (x, y, z) and unit ``rotation`` quaternion (x, y, z, w)."""
+
+    translation: Vec3 = (0.0, 0.0, 0.0)
+    rotation: Quat = (0.0, 0.0, 0.0, 1.0)
+
+    @classmethod
+    def from_matrix(cls, matrix: npt.ArrayLike) -> Transform:
+        """From a 4x4 homogeneous matrix."""
+        m = np.asarray(matrix, dtype=np.float64)
+        x, y, z = (float(v) for v in m[:3, 3])
+        qx, qy, qz, qw = (float(v) for v in matrix_to_quat(m[:3, :3]))
+        return cls((x, y, z), (qx, qy, qz, qw))
+
+    @classmethod
+    def from_xyz_rpy(cls, xyz: Vec3, rpy: Vec3) -> Transform:
+        """From a URDF ``<origin xyz rpy>``."""
+        qx, qy, qz, qw = (float(v) for v in rpy_to_quat(rpy))
+        return cls(xyz, (qx, qy, qz, qw))
+
+    def matrix(self) -> FloatArray:
+        """The 4x4 homogeneous matrix."""
+        out = np.eye(4)
+        out[:3, :3] = quat_to_matrix(self.rotation)
+        out[:3, 3] = self.translation
+        return out
+
+    def rpy(self) -> Vec3:
+        """Roll, pitch, yaw of the rotation (URDF convention)."""
+        r, p, y = (float(v) for v in matrix_to_rpy(quat_to_matrix(self.rotation)))
+        return (r, p, y)
+
+    def inverse(self) -> Transform:
+        """T_child_parent from T_parent_child."""
+        x, y, z, w = self.rotation
+        conj = (-x, -y, -z, w)
+        t = -(quat_to_matrix(conj) @ np.asarray(self.translation))
+        return Transform((float(t[0]), float(t[1]), float(t[2])), conj)
+
+    def __matmul__(self, other: Transform) -> Transform:
+        """Compose: (T_a_b @ T_b_c) = T_a_c."""
+        t = quat_to_matrix(self.rotation) @ np.asarray(other.translation) + np.asarray(self.translation)
+        q = quat_multiply(self.rotation, other.rotation)
+        q = q / np.linalg.norm(q)
+        return Transform((float(t[0]), float(t[1]), float(t[2])),
+                         (float(q[0]), float(q[1]), float(q[2]), float(q[3])))
