@@ -7,7 +7,7 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 
 from robotmodel.errors import URDFError
-from robotmodel.model._parse import parse_urdf
+from robotmodel.model._parse import parse_located, parse_urdf
 from robotmodel.model._types import RobotDescription
 from robotmodel.xacro import expand, expand_string
 
@@ -37,4 +37,8 @@ def load(
         what = "is a directory, not a URDF file" if path.is_dir() else "no such file"
         raise URDFError(f"{path}: {what}")
     text = expand(path, args, package_paths=package_paths, untrusted=untrusted)
-    return parse_urdf(text, source=str(path))
+    try:
+        original = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError):
+        original = ""
+    return parse_located(text, source=str(path), original=original)

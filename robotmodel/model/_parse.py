@@ -13,6 +13,7 @@ import re
 import xml.etree.ElementTree as ET
 
 from robotmodel.errors import URDFError, URDFParseError
+from robotmodel.model._locate import locate
 from robotmodel.model._tree import validate_tree
 from robotmodel.model._types import (
     Box,
@@ -286,9 +287,15 @@ def _version(robot: ET.Element) -> tuple[int, int]:
 def parse_urdf(text: str, *, source: str | None = None) -> RobotDescription:
     """Parse URDF XML ``text`` into a validated :class:`RobotDescription`.
 
-    ``source`` names the file in error messages. Raises :class:`URDFParseError` for
-    malformed XML or elements and :class:`URDFError` for an invalid robot.
+    ``source`` names the file in error messages, which also give the offending
+    element's line when it can be found. Raises :class:`URDFParseError` for malformed
+    XML or elements and :class:`URDFError` for an invalid robot.
     """
+    return parse_located(text, source=source, original=text)
+
+
+def parse_located(text: str, *, source: str | None, original: str) -> RobotDescription:
+    """:func:`parse_urdf`, with error lines looked up in ``original`` (the pre-xacro text)."""
     label = source or "<string>"
     try:
         robot = ET.fromstring(text)
@@ -303,7 +310,9 @@ def parse_urdf(text: str, *, source: str | None = None) -> RobotDescription:
     try:
         return _robot(robot, text, source)
     except URDFError as exc:
-        raise type(exc)(f"{label}: {exc}") from None
+        line = locate(original, str(exc))
+        where = f"{label}:{line}" if line is not None else label
+        raise type(exc)(f"{where}: {exc}") from None
 
 
 def _robot(robot: ET.Element, text: str, source: str | None) -> RobotDescription:

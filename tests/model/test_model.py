@@ -129,6 +129,16 @@ def test_load_errors_name_the_file(tmp_path: Path) -> None:
     with pytest.raises(URDFError, match="is a directory"):
         load(tmp_path)
     bad = tmp_path / "bad.urdf"
-    bad.write_text('<robot name="r"><link name="a"/><link name="a"/></robot>')
-    with pytest.raises(URDFError, match=r"bad\.urdf: link 'a' is not unique\."):
+    bad.write_text('<robot name="r">\n  <link name="a"/>\n\n  <link name="a"/>\n</robot>\n')
+    with pytest.raises(URDFError, match=r"bad\.urdf:4: link 'a' is not unique\.$"):
+        load(bad)
+    # The line is that of the user's file, not of xacro's re-formatted output.
+    bad.write_text('<robot name="r">\n<!-- c -->\n\n<link name="a"/><link name="b"/>\n'
+                   '<joint name="j" type="revolute">\n<parent link="a"/><child link="b"/></joint>\n</robot>')
+    with pytest.raises(URDFError, match=r"bad\.urdf:5: Joint \[j\] is of type REVOLUTE"):
+        load(bad)
+    # A name xacro made up is not in the source: no line rather than a wrong one.
+    bad.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro"><xacro:property name="p" '
+                   'value="x_"/><link name="${p}a"/><link name="${p}a"/></robot>')
+    with pytest.raises(URDFError, match=r"bad\.urdf: link 'x_a' is not unique\.$"):
         load(bad)
