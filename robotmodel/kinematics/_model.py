@@ -1,0 +1,219 @@
+"""The immutable kinematic model: joint-name mapping, mimic resolution and limits, over Pinocchio.
+
+Pinocchio stores a continuous joint as two configuration values (cos θ, sin θ) and a
+floating joint as seven, so names map to its ``q`` through each joint's ``idx_q`` and
+``nq``, never by list position. Mimic joints are computed here (value = multiplier ×
+master + offset, through chains, whatever the document order) instead of with
+Pinocchio's ``mimic=True``, which fails when a master comes later in the tree.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+import pinocchio as pin
+
+from robotmodel.errors import JointValueError, KinematicsError
+from robotmodel.kinematics._joints import JointTable
+from robotmodel.model import JointType, RobotDescription, load, to_urdf
+from robotmodel.spatial import FloatArray
+
+__all__ = ["JointValues", "KinematicModel", "MimicRule"]
+
+#: Joint values by name; floating joints take 7 numbers (x y z qx qy qz qw), planar 3 (x y θ).
+JointValues = Mapping[str, float | Sequence[float]]
+
+_ONE_DOF = (JointType.REVOLUTE, JointType.CONTINUOUS, JointType.PRISMATIC)
+
+
+@dataclass(frozen=True, slots=True)
+class MimicRule:
+    """Resolved mimic: value = multiplier × value of ``master`` + offset, ``master`` independent."""
+
+    joint: str
+    master: str
+    multiplier: float
+    offset: float
+
+
+def _resolve_mimics(desc: RobotDescription) -> dict[str, MimicRule]:
+    by_name = {j.name: j for j in desc.joints}
+    rules: dict[str, MimicRule] = {}
+    for joint in desc.joints:
+        if joint.mimic is None or joint.type not in _ONE_DOF or joint.mimic.joint not in by_name:
+            continue
+        multiplier, offset, master = 1.0, 0.0, joint
+        # Walk the chain to an independent joint, composing the affine maps.
+        while master.mimic is not None and master.mimic.joint in by_name:
+            multiplier, offset = (multiplier * master.mimic.multiplier,
+                                  multiplier * master.mimic.offset + offset)
+            master = by_name[master.mimic.joint]
+        rules[joint.name] = MimicRule(joint.name, master.name, multiplier, offset)
+    return rules
+
+
+class KinematicModel:
+    """An immutable robot model for kinematics; evaluation state lives in :class:`KinematicState`.
+
+    ``variables`` are the independent one-DoF joints (revolute, continuous, prismatic,
+    not mimicking another) in document order: the order of every joint vector.
+    """
+
+    def __init__(self, description: RobotDescription) -> None:
+        self.description = description
+        urdf = description.urdf or to_urdf(description)
+        try:
+            self.pin_model: Any = pin.buildModelFromXML(urdf)
+        except (ValueError, RuntimeError) as exc:
+            raise KinematicsError(f"Pinocchio could not build robot '{description.name}': {exc}") from None
+        self.root = description.root
+        self.mimics = _resolve_mimics(description)
+        self.variables: tuple[str, ...] = tuple(
+            j.name for j in description.joints if j.type in _ONE_DOF and j.name not in self.mimics
+        )
+        self.link_names: tuple[str, ...] = tuple(link.name for link in description.links)
+        self.table = JointTable.from_description(description)
+        self._joint_index = {name: i for i, name in enumerate(self.table.names)}
+        self._variable_index = {name: i for i, name in enumerate(self.variables)}
+        model = self.pin_model
+        self._pin_joint: dict[str, int] = {}
+        for joint in description.joints:
+            if joint.type is not JointType.FIXED:
+                jid = model.getJointId(joint.name)
+                if jid >= model.njoints:
+                    raise KinematicsError(f"joint [{joint.name}] is missing from Pinocchio's model")
+                self._pin_joint[joint.name] = jid
+        self._link_frames = [model.getFrameId(name, pin.BODY) for name in self.link_names]
+        lower, upper = [], []
+        for name in self.variables:
+            joint = description.joint(name)
+            lim = joint.limit
+            bounded = joint.type is not JointType.CONTINUOUS and lim is not None
+            lower.append(lim.lower if bounded and lim and lim.lower is not None else -math.inf)
+            upper.append(lim.upper if bounded and lim and lim.upper is not None else math.inf)
+        self.lower: FloatArray = np.array(lower)
+        self.upper: FloatArray = np.array(upper)
+        # Columns that map the independent variables onto every joint of the table.
+        self._expand = np.zeros((len(self.table.names), len(self.variables)))
+        self._expand_offset = np.zeros(len(self.table.names))
+        for name, i in self._variable_index.items():
+            self._expand[self._joint_index[name], i] = 1.0
+        for rule in self.mimics.values():
+            if rule.master in self._variable_index:
+                row = self._joint_index[rule.joint]
+                self._expand[row, self._variable_index[rule.master]] = rule.multiplier
+                self._expand_offset[row] = rule.offset
+
+    @classmethod
+    def load(cls, source: str | os.PathLike[str], args: Mapping[str, str] | None = None) -> KinematicModel:
+        """Load a URDF/xacro file (see :func:`robotmodel.load`) and build its model."""
+        return cls(load(source, args))
+
+    @property
+    def nv(self) -> int:
+        """Number of independent joint variables."""
+        return len(self.variables)
+
+    def default_positions(self) -> dict[str, float]:
+        """joint_state_publisher's defaults: 0, or the middle of the limits when 0 is outside them."""
+        out = {}
+        for name, lo, hi in zip(self.variables, self.lower, self.upper, strict=True):
+            out[name] = 0.0 if lo <= 0.0 <= hi else float((lo + hi) / 2.0)
+        return out
+
+    def vector(
+        self, positions: JointValues | npt.ArrayLike | None = None, *, clamp: bool = False
+    ) -> FloatArray:
+        """Validate joint values and return the variable vector (unset joints take their default).
+
+        Raises :class:`JointValueError` naming the joint for unknown names, a wrong length,
+        NaN/inf, or a value outside the limits (unless ``clamp``, which clamps instead).
+        """
+        if positions is None or isinstance(positions, Mapping):
+            defaults = self.default_positions()
+            q = np.array([defaults[n] for n in self.variables])
+            for name, value in (positions or {}).items():
+                if name in self._variable_index:
+                    q[self._variable_index[name]] = self._scalar(name, value)
+                elif name in self.mimics or name in self._pin_joint or name in self._joint_index:
+                    continue  # mimic, floating, planar and fixed joints are handled elsewhere
+                else:
+                    raise JointValueError(
+                        f"unknown joint '{name}' for robot '{self.description.name}' "
+                        f"(its joints: {', '.join(self.variables)})", name)
+        else:
+            q = np.asarray(positions, dtype=np.float64).reshape(-1)
+            if q.shape[0] != self.nv:
+                raise JointValueError(f"expected {self.nv} joint values ({', '.join(self.variables)}), "
+                                      f"got {q.shape[0]}")
+            bad = np.flatnonzero(~np.isfinite(q))
+            if bad.size:
+                name = self.variables[bad[0]]
+                raise JointValueError(f"joint '{name}': value {q[bad[0]]} is not finite", name)
+        return self._limit(q, clamp)
+
+    def _scalar(self, name: str, value: float | Sequence[float]) -> float:
+        try:
+            number = float(value)  # type: ignore[arg-type]
+        except (TypeError, ValueError):
+            raise JointValueError(f"joint '{name}': expected one number, got {value!r}", name) from None
+        if not math.isfinite(number):
+            raise JointValueError(f"joint '{name}': value {number} is not finite", name)
+        return number
+
+    def _limit(self, q: FloatArray, clamp: bool) -> FloatArray:
+        # A hair of tolerance: values written out and read back in text must stay valid.
+        tol = 1e-12
+        outside = (q < self.lower - tol) | (q > self.upper + tol)
+        if not outside.any():
+            return q
+        if clamp:
+            return np.clip(q, self.lower, self.upper)
+        i = int(np.flatnonzero(outside)[0])
+        name = self.variables[i]
+        raise JointValueError(
+            f"joint '{name}': value {q[i]:g} is outside its limits [{self.lower[i]:g}, {self.upper[i]:g}] "
+            "(pass clamp=True to clamp)", name)
+
+    def joint_values(self, q: npt.ArrayLike) -> FloatArray:
+        """Every joint's value (document order, mimics computed) from variable vectors ``(..., nv)``."""
+        return np.asarray(q, dtype=np.float64) @ self._expand.T + self._expand_offset
+
+    def pin_configuration(self, q: FloatArray, extra: JointValues | None = None) -> FloatArray:
+        """Pinocchio's ``q`` for variable vector ``q`` (floating/planar values from ``extra``)."""
+        model = self.pin_model
+        config: FloatArray = pin.neutral(model)
+        values = self.joint_values(q)
+        for name, jid in self._pin_joint.items():
+            idx, nq = model.idx_qs[jid], model.nqs[jid]
+            jtype = self.description.joint(name).type
+            if jtype in _ONE_DOF:
+                value = values[self._joint_index[name]]
+                if extra and name in extra and name in self.mimics:
+                    value = self._scalar(name, extra[name])  # an explicit mimic value wins, as in RSP
+                if nq == 2:
+                    config[idx], config[idx + 1] = math.cos(value), math.sin(value)
+                else:
+                    config[idx] = value
+            elif extra and name in extra:
+                config[idx:idx + nq] = self._free_or_planar(name, jtype, extra[name])
+        return config
+
+    def _free_or_planar(self, name: str, jtype: JointType, value: float | Sequence[float]) -> FloatArray:
+        v = np.asarray(value, dtype=np.float64).reshape(-1)
+        want = 7 if jtype is JointType.FLOATING else 3
+        if v.shape[0] != want or not np.all(np.isfinite(v)):
+            form = "x y z qx qy qz qw" if want == 7 else "x y theta"
+            raise JointValueError(f"joint '{name}' ({jtype.value}) takes {want} finite numbers: {form}", name)
+        if want == 7:
+            norm = np.linalg.norm(v[3:])
+            if norm == 0.0:
+                raise JointValueError(f"joint '{name}': zero quaternion", name)
+            return np.concatenate([v[:3], v[3:] / norm])
+        return np.array([v[0], v[1], math.cos(v[2]), math.sin(v[2])])
