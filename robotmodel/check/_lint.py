@@ -140,7 +140,9 @@ def lint(
         limit = joint.limit
         if limit is None or joint.type not in (JointType.REVOLUTE, JointType.PRISMATIC, JointType.CONTINUOUS):
             continue
-        if limit.lower is not None and limit.upper is not None and limit.lower > limit.upper:
+        # A continuous joint has no position limits, whatever its <limit> says.
+        if (joint.type is not JointType.CONTINUOUS and limit.lower is not None and limit.upper is not None
+                and limit.lower > limit.upper):
             findings.append(Finding("limit-lower-above-upper", Severity.WARNING, element,
                                     f"lower limit {limit.lower:g} is above upper limit {limit.upper:g}"))
         if limit.effort <= 0.0:

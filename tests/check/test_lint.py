@@ -80,6 +80,11 @@ def test_limits(limit: str, codes: list[str]) -> None:
     assert _codes(_robot(limit=limit)) == codes
 
 
+def test_continuous_joint_has_no_position_limits() -> None:
+    limit = '<limit effort="1" velocity="1" lower="1" upper="-1"/>'
+    assert _codes(_robot(joint='type="continuous"', limit=limit)) == []
+
+
 def _mesh(uri: str) -> str:
     return _inertial() + f'<visual><geometry><mesh filename="{uri}"/></geometry></visual>'
 
