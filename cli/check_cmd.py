@@ -37,7 +37,7 @@ def _load(args: argparse.Namespace) -> tuple[RobotDescription, Path]:
     mappings = split_mappings(args.mappings)
     if args.file == "-":
         text = sys.stdin.read()
-        if not text.lstrip().startswith("<"):
+        if not text.lstrip("\ufeff \t\r\n").startswith("<"):
             raise URDFParseError("<stdin>: empty document or not XML")
         desc = load(text, mappings, package_paths=args.package_path, untrusted=args.untrusted)
         return desc, Path.cwd()

@@ -29,7 +29,7 @@ def load(
     directory. Raises :class:`robotmodel.errors.XacroError` if expansion fails and
     :class:`robotmodel.errors.URDFError` if the result is not a valid robot.
     """
-    if isinstance(source, str) and source.lstrip().startswith("<"):
+    if isinstance(source, str) and source.lstrip("\ufeff \t\r\n").startswith("<"):
         text = expand_string(source, args, package_paths=package_paths, untrusted=untrusted)
         return parse_urdf(text)
     path = Path(source)
