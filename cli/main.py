@@ -23,6 +23,7 @@ COMMAND_MODULES: tuple[str, ...] = (
     "robotmodel.cli.xacro_cmd",
     "robotmodel.cli.check_cmd",
     "robotmodel.cli.graphviz_cmd",
+    "robotmodel.cli.fk_cmd",
 )
 
 

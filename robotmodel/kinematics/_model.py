@@ -179,7 +179,7 @@ class KinematicModel:
         name = self.variables[i]
         raise JointValueError(
             f"joint '{name}': value {q[i]:g} is outside its limits [{self.lower[i]:g}, {self.upper[i]:g}] "
-            "(pass clamp=True to clamp)", name)
+            "(clamp=True, or --clamp, clamps instead)", name)
 
     def joint_values(self, q: npt.ArrayLike) -> FloatArray:
         """Every joint's value (document order, mimics computed) from variable vectors ``(..., nv)``."""
