@@ -8,6 +8,7 @@ import math
 from typing import Any
 
 from robotmodel.cli._common import add_model_arguments, split_mappings
+
 from robotmodel.errors import RobotModelError
 from robotmodel.kinematics import KinematicModel, KinematicState
 from robotmodel.model import load

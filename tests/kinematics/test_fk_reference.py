@@ -10,8 +10,8 @@ import yourdfpy
 from conftest import ERD_ROBOTS, erd_urdfs
 from handfk import HandFK
 
-from robotmodel.model import JointType, RobotDescription, parse_urdf
 from robotmodel.kinematics import KinematicModel, KinematicState, batch_link_matrices
+from robotmodel.model import JointType, RobotDescription, parse_urdf
 
 ROBOTS = [p for p in erd_urdfs() if p.name != "ur3.urdf"]  # ur3.urdf is an empty robot
 TOL = 1e-9
