@@ -13,6 +13,7 @@ from robotmodel.kinematics._model import JointValues, KinematicModel, MimicRule
 from robotmodel.kinematics._publish import (
     JointTransforms,
     batch_link_matrices,
+    batch_link_poses,
     joint_transforms,
     static_transforms,
 )
@@ -25,6 +26,7 @@ __all__ = [
     "KinematicState",
     "MimicRule",
     "batch_link_matrices",
+    "batch_link_poses",
     "joint_transforms",
     "static_transforms",
 ]

@@ -20,6 +20,7 @@ import numpy.typing as npt
 import pinocchio as pin
 
 from robotmodel.errors import JointValueError, KinematicsError
+from robotmodel.kinematics._fast import CycleTables, cross_matrix
 from robotmodel.kinematics._joints import JointTable
 from robotmodel.model import JointType, RobotDescription, load, to_urdf
 from robotmodel.spatial import FloatArray
@@ -56,6 +57,38 @@ def _resolve_mimics(desc: RobotDescription) -> dict[str, MimicRule]:
             master = by_name[master.mimic.joint]
         rules[joint.name] = MimicRule(joint.name, master.name, multiplier, offset)
     return rules
+
+
+@dataclass(frozen=True)
+class _Cycle:
+    """The publishing cycle's fast path: every one-DoF joint, values from the variables."""
+
+    independent: tuple[str, ...]
+    joints: tuple[str, ...]
+    parents: tuple[str, ...]
+    children: tuple[str, ...]
+    expand_t: FloatArray
+    offset: FloatArray
+    has_mimics: bool
+    explicit_mimic: dict[str, int]
+    tables: CycleTables
+
+    @classmethod
+    def build(cls, model: KinematicModel) -> _Cycle:
+        table = model.table
+        rows = [i for i, j in enumerate(model.description.joints) if j.type in _ONE_DOF]
+        return cls(
+            independent=model.variables,
+            joints=tuple(table.names[i] for i in rows),
+            parents=tuple(table.parents[i] for i in rows),
+            children=tuple(table.children[i] for i in rows),
+            expand_t=np.ascontiguousarray(model._expand[rows].T),
+            offset=model._expand_offset[rows],
+            # Without mimics the rows are exactly the variables, in the same order.
+            has_mimics=len(rows) != len(model.variables),
+            explicit_mimic={table.names[i]: k for k, i in enumerate(rows) if table.names[i] in model.mimics},
+            tables=CycleTables.build(table, rows),
+        )
 
 
 class KinematicModel:
@@ -109,6 +142,15 @@ class KinematicModel:
                 row = self._joint_index[rule.joint]
                 self._expand[row, self._variable_index[rule.master]] = rule.multiplier
                 self._expand_offset[row] = rule.offset
+
+        self._cycle = _Cycle.build(self)
+        self._link_index = {name: i for i, name in enumerate(self.link_names)}
+        # Batch FK walks joints parents-first: (joint row, parent link, child link).
+        self._walk_rows = [
+            (self._joint_index[j.name], self._link_index[j.parent], self._link_index[j.child])
+            for _, j in description.walk()
+        ]
+        self._cross = [cross_matrix(axis) for axis in self.table.axis]
 
     @classmethod
     def load(cls, source: str | os.PathLike[str], args: Mapping[str, str] | None = None) -> KinematicModel:

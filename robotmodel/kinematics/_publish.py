@@ -8,12 +8,14 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
-from robotmodel.kinematics._joints import KIND_FIXED, local_transforms
+from robotmodel.kinematics._joints import KIND_FIXED, KIND_PRISMATIC, KIND_REVOLUTE, local_transforms
 from robotmodel.kinematics._model import KinematicModel
 from robotmodel.model import JointType
 from robotmodel.spatial import FloatArray, matrix_to_quat
 
-__all__ = ["JointTransforms", "batch_link_matrices", "joint_transforms", "static_transforms"]
+__all__ = [
+    "JointTransforms", "batch_link_matrices", "batch_link_poses", "joint_transforms", "static_transforms",
+]
 
 
 @dataclass(frozen=True)
@@ -64,25 +66,44 @@ def joint_transforms(model: KinematicModel, positions: Mapping[str, float]) -> J
     (an explicit mimic value wins). Fixed, planar and floating joints are not (floating
     gets no transform at all, as in RSP). Values are taken as given: RSP does not clamp.
     """
+    cycle = model._cycle
+    try:
+        # The usual message names every movable joint: one array, no per-joint branching.
+        values = np.array([positions[n] for n in cycle.independent])
+        complete = True
+    except KeyError:
+        complete = False
+    if complete:
+        full = values @ cycle.expand_t + cycle.offset if cycle.has_mimics else values
+        if cycle.has_mimics and len(positions) > len(values):
+            for name, row in cycle.explicit_mimic.items():
+                if name in positions:
+                    full[row] = positions[name]
+        translations, rotations = cycle.tables.evaluate(full)
+        return JointTransforms(cycle.joints, cycle.parents, cycle.children, translations, rotations)
     index = model._joint_index
-    values = np.zeros(len(model.table.names))
+    table = model.table
+    all_values = np.zeros(len(table.names))
     rows: list[int] = []
     for name, value in positions.items():
         i = index.get(name)
-        if i is not None and model.table.kinds[i] != KIND_FIXED:
-            values[i] = value
+        if i is not None and table.kinds[i] != KIND_FIXED:
+            all_values[i] = value
             rows.append(i)
     for rule in model.mimics.values():
         if rule.joint not in positions and rule.master in positions:
             i = index[rule.joint]
-            values[i] = rule.multiplier * positions[rule.master] + rule.offset
+            all_values[i] = rule.multiplier * positions[rule.master] + rule.offset
             rows.append(i)
     rows.sort()
-    return _select(model, rows, values)
+    return _select(model, rows, all_values)
 
 
-def batch_link_matrices(model: KinematicModel, q: npt.ArrayLike) -> FloatArray:
-    """``(N, L, 4, 4)`` T_root_link for ``N`` configurations ``(N, nv)``, without a per-config loop.
+def batch_link_poses(model: KinematicModel, q: npt.ArrayLike) -> tuple[FloatArray, FloatArray]:
+    """T_root_link of every link for ``N`` configurations ``(N, nv)``, without a per-config loop.
+
+    Link-major: rotations ``(L, N, 3, 3)`` and translations ``(L, N, 3)``, in
+    ``model.link_names`` order.
 
     Floating and planar joints stay at their origin. Values are not limit-checked here;
     validate with :meth:`KinematicModel.vector` where they come from users.
@@ -91,18 +112,56 @@ def batch_link_matrices(model: KinematicModel, q: npt.ArrayLike) -> FloatArray:
     if configs.ndim != 2 or configs.shape[1] != model.nv:
         raise ValueError(f"expected an (N, {model.nv}) array of joint values, got shape {configs.shape}")
     n = configs.shape[0]
-    rotation, translation = local_transforms(model.table, model.joint_values(configs))
-    link_index = {name: i for i, name in enumerate(model.link_names)}
-    out = np.empty((n, len(model.link_names), 4, 4))
-    out[:, :, 3, :3] = 0.0
-    out[:, :, 3, 3] = 1.0
+    rotations = np.empty((len(model.link_names), n, 3, 3))
+    translations = np.empty((len(model.link_names), n, 3))
+    # Chunks small enough to stay in cache; each chunk is fully vectorized.
+    for start in range(0, n, _CHUNK):
+        stop = min(n, start + _CHUNK)
+        _batch_chunk(model, configs[start:stop], rotations[:, start:stop], translations[:, start:stop])
+    return rotations, translations
+
+
+_CHUNK = 8192
+
+
+def _batch_chunk(model: KinematicModel, configs: FloatArray, rotations: FloatArray,
+                 translations: FloatArray) -> None:
+    n = configs.shape[0]
+    values = model.joint_values(configs)
+    table = model.table
+    link_index = model._link_index
     root = link_index[model.root]
-    out[:, root, :3, :3] = np.eye(3)
-    out[:, root, :3, 3] = 0.0
-    for _, joint in model.description.walk():
-        j = model._joint_index[joint.name]
-        parent = out[:, link_index[joint.parent]]
-        child = out[:, link_index[joint.child]]
-        child[:, :3, :3] = parent[:, :3, :3] @ rotation[:, j]
-        child[:, :3, 3] = np.einsum("nab,nb->na", parent[:, :3, :3], translation[:, j]) + parent[:, :3, 3]
+    rotations[root] = np.eye(3)
+    translations[root] = 0.0
+    scratch = np.empty((n, 3, 3))
+    for j, parent, child in model._walk_rows:
+        r_parent = rotations[parent].reshape(n * 3, 3)
+        # Products with constant 3x3 matrices only: BLAS does all N at once.
+        a = (r_parent @ table.origin_rotation[j]).reshape(n, 3, 3)
+        out_t = translations[child]
+        np.add(translations[parent], r_parent.dot(table.origin_translation[j]).reshape(n, 3), out=out_t)
+        kind = table.kinds[j]
+        out_r = rotations[child]
+        if kind == KIND_REVOLUTE:
+            k = model._cross[j]
+            theta = values[:, j]
+            b = (a.reshape(n * 3, 3) @ k).reshape(n, 3, 3)
+            np.multiply(b, np.sin(theta)[:, None, None], out=out_r)
+            out_r += a
+            np.multiply((b.reshape(n * 3, 3) @ k).reshape(n, 3, 3),
+                        (1.0 - np.cos(theta))[:, None, None], out=scratch)
+            out_r += scratch
+        else:
+            out_r[...] = a
+            if kind == KIND_PRISMATIC:
+                out_t += values[:, j][:, None] * (a.reshape(n * 3, 3) @ table.axis[j]).reshape(n, 3)
+
+
+def batch_link_matrices(model: KinematicModel, q: npt.ArrayLike) -> FloatArray:
+    """``(N, L, 4, 4)`` T_root_link for ``N`` configurations ``(N, nv)``; see :func:`batch_link_poses`."""
+    rotations, translations = batch_link_poses(model, q)
+    out = np.zeros((rotations.shape[1], rotations.shape[0], 4, 4))
+    out[:, :, :3, :3] = rotations.transpose(1, 0, 2, 3)
+    out[:, :, :3, 3] = translations.transpose(1, 0, 2)
+    out[:, :, 3, 3] = 1.0
     return out
