@@ -85,11 +85,32 @@ class JointValueError(KinematicsError):
 
 
 class TransformException(RobotModelError):
-    """Root of tf2's exceptions (tf2.TransformException)."""
+    """Root of tf2's exceptions (tf2.TransformException), with structured context.
+
+    ``target_frame``/``source_frame`` name the lookup, ``time_ns`` the requested time,
+    ``earliest_ns``/``latest_ns`` the data available, when they apply (else None).
+    """
+
+    def __init__(
+        self,
+        message: str,
+        *,
+        target_frame: str | None = None,
+        source_frame: str | None = None,
+        time_ns: int | None = None,
+        earliest_ns: int | None = None,
+        latest_ns: int | None = None,
+    ) -> None:
+        super().__init__(message)
+        self.target_frame = target_frame
+        self.source_frame = source_frame
+        self.time_ns = time_ns
+        self.earliest_ns = earliest_ns
+        self.latest_ns = latest_ns
 
 
 class LookupException(TransformException):
-    """A frame does not exist in the buffer."""
+    """A frame does not exist in the buffer (or the tree has a loop)."""
 
 
 class ConnectivityException(TransformException):

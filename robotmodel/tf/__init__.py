@@ -1,1 +1,59 @@
-"""robotmodel.tf (being built)."""
+"""A tf2-style transform buffer: ROS 2 message classes, Time/Duration, Buffer, tf2's exceptions.
+
+Code written for tf2_ros carries over with only its imports changed::
+
+    from robotmodel.tf import Buffer, TransformStamped, Time, Duration, LookupException
+"""
+
+from __future__ import annotations
+
+from robotmodel.errors import (
+    ConnectivityException,
+    ExtrapolationException,
+    InvalidArgumentException,
+    LookupException,
+    TimeoutException,
+    TransformException,
+)
+from robotmodel.tf._buffer import Buffer
+from robotmodel.tf._core import MAX_GRAPH_DEPTH, BufferCore
+from robotmodel.tf._msgs import (
+    Header,
+    Point,
+    PointStamped,
+    Pose,
+    PoseStamped,
+    Quaternion,
+    Transform,
+    TransformStamped,
+    Vector3,
+    Vector3Stamped,
+)
+from robotmodel.tf._time import Duration, Time
+from robotmodel.tf._view import view_frames_gv, write_view_frames
+
+__all__ = [
+    "MAX_GRAPH_DEPTH",
+    "Buffer",
+    "BufferCore",
+    "ConnectivityException",
+    "Duration",
+    "ExtrapolationException",
+    "Header",
+    "InvalidArgumentException",
+    "LookupException",
+    "Point",
+    "PointStamped",
+    "Pose",
+    "PoseStamped",
+    "Quaternion",
+    "Time",
+    "TimeoutException",
+    "Transform",
+    "TransformException",
+    "TransformStamped",
+    "Vector3",
+    "Vector3Stamped",
+    "view_frames_gv",
+    "write_view_frames",
+]

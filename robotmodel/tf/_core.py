@@ -1,0 +1,351 @@
+"""tf2's BufferCore: frame registry, per-frame caches, validated inserts, lookups along the tree.
+
+Semantics follow ROS 2 (Jazzy) tf2: time 0 means the latest common time of the chain,
+static transforms are valid at all times, no extrapolation, interpolation per link,
+walk to the common ancestor, loop detection at MAX_GRAPH_DEPTH, and tf2's texts in
+errors and logs. All state is guarded by one condition variable: many threads may
+insert and look up at once, and waiters wake on every accepted insert.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+import threading
+
+from robotmodel.errors import (
+    ConnectivityException,
+    ExtrapolationException,
+    InvalidArgumentException,
+    LookupException,
+    TransformException,
+)
+from robotmodel.tf._cache import CacheMiss, StaticCache, TimeCache, format_time
+from robotmodel.tf._math import IDENTITY, Pose7, canonical_quat, compose, inverse
+from robotmodel.tf._msgs import TransformStamped
+
+__all__ = ["MAX_GRAPH_DEPTH", "BufferCore"]
+
+_log = logging.getLogger("robotmodel.tf")
+
+#: tf2's bound on any walk up the tree; beyond it the tree must contain a loop.
+MAX_GRAPH_DEPTH = 1000
+_DEFAULT_CACHE_NS = 10_000_000_000
+
+
+class BufferCore:
+    """Transform storage and lookup with tf2's BufferCore semantics (times in integer ns)."""
+
+    def __init__(self, cache_time_ns: int = _DEFAULT_CACHE_NS) -> None:
+        self.cache_time_ns = cache_time_ns
+        self._ids: dict[str, int] = {"NO_PARENT": 0}
+        self._names: list[str] = ["NO_PARENT"]
+        self._caches: list[TimeCache | StaticCache | None] = [None]
+        self._authority: dict[int, str] = {}
+        self._cond = threading.Condition(threading.RLock())
+
+    # ----------------------------------------------------------------- insert
+    def set_transform(self, transform: TransformStamped, authority: str, is_static: bool = False) -> bool:
+        """Insert a transform; invalid ones are logged with tf2's texts and not stored."""
+        parent = transform.header.frame_id
+        child = transform.child_frame_id
+        parent = parent[1:] if parent.startswith("/") else parent
+        child = child[1:] if child.startswith("/") else child
+        tr = transform.transform.translation
+        rot = transform.transform.rotation
+        x, y, z = float(tr.x), float(tr.y), float(tr.z)
+        ok = True
+        try:
+            qx, qy, qz, qw = canonical_quat(float(rot.x), float(rot.y), float(rot.z), float(rot.w))
+        except ValueError:
+            qx = qy = qz = qw = math.nan
+        if child == parent:
+            _log.error('TF_SELF_TRANSFORM: Ignoring transform from authority "%s" with frame_id and  '
+                       'child_frame_id "%s" because they are the same', authority, child)
+            ok = False
+        if not child:
+            _log.error('TF_NO_CHILD_FRAME_ID: Ignoring transform from authority "%s" because '
+                       "child_frame_id not set ", authority)
+            ok = False
+        if not parent:
+            _log.error('TF_NO_FRAME_ID: Ignoring transform with child_frame_id "%s"  from authority "%s" '
+                       "because frame_id not set", child, authority)
+            ok = False
+        values = (x, y, z, qx, qy, qz, qw)
+        if any(math.isnan(v) for v in values) or any(math.isinf(v) for v in values):
+            _log.error('TF_NAN_INPUT: Ignoring transform for child_frame_id "%s" from authority "%s" because '
+                       "of a nan value in the transform (%f %f %f) (%f %f %f %f)", child, authority,
+                       x, y, z, rot.x, rot.y, rot.z, rot.w)
+            ok = False
+        if math.isnan(qw):
+            _log.error('TF_DENORMALIZED_QUATERNION: Ignoring transform for child_frame_id "%s" from authority '
+                       '"%s" because of an invalid quaternion in the transform (%f %f %f %f)', child,
+                       authority, rot.x, rot.y, rot.z, rot.w)
+            ok = False
+        if not ok:
+            return False
+        stamp = int(transform.header.stamp.sec) * 1_000_000_000 + int(transform.header.stamp.nanosec)
+        with self._cond:
+            child_id = self._intern(child)
+            cache = self._caches[child_id]
+            # ROS 2 switches a frame between static and dynamic, dropping its history.
+            if is_static and not isinstance(cache, StaticCache):
+                cache = StaticCache(values, 0)
+            elif not is_static and not isinstance(cache, TimeCache):
+                cache = TimeCache(self.cache_time_ns)
+            assert cache is not None
+            self._caches[child_id] = cache
+            parent_id = self._intern(parent)
+            if not cache.insert(stamp, values, parent_id):
+                _log.warning("TF_OLD_DATA ignoring data from the past for frame %s at time %s according to "
+                             "authority %s\nPossible reasons are listed at "
+                             "http://wiki.ros.org/tf/Errors%%20explained", child, format_time(stamp), authority)
+                return False
+            self._authority[child_id] = authority
+            self._cond.notify_all()
+        return True
+
+    def _intern(self, name: str) -> int:
+        found = self._ids.get(name)
+        if found is None:
+            found = self._ids[name] = len(self._names)
+            self._names.append(name)
+            self._caches.append(None)
+        return found
+
+    # ----------------------------------------------------------------- lookup
+    def _validate(self, name: str, arg: str) -> int:
+        if not name:
+            raise InvalidArgumentException(
+                f'Invalid argument "" passed to {arg} - in tf2 frame_ids cannot be empty')
+        if name.startswith("/"):
+            raise InvalidArgumentException(
+                f'Invalid argument "{name}" passed to {arg} - in tf2 frame_ids cannot start with a \'/\'')
+        found = self._ids.get(name)
+        if not found:
+            raise LookupException(f'"{name}" passed to {arg} does not exist. ')
+        return found
+
+    def lookup_ns(self, target: str, source: str, time_ns: int) -> tuple[Pose7, int]:
+        """T_target_source at ``time_ns`` (0 = latest common); returns (pose, stamp used)."""
+        with self._cond:
+            if target == source:
+                stamp = time_ns
+                if stamp == 0 and (fid := self._ids.get(target)):
+                    cache = self._caches[fid]
+                    stamp = cache.latest()[0] if cache is not None else 0
+                return IDENTITY, stamp
+            target_id = self._validate(target, "lookupTransform argument target_frame")
+            source_id = self._validate(source, "lookupTransform argument source_frame")
+            return self._lookup_ids(target_id, source_id, time_ns, target, source)
+
+    def _lookup_ids(self, target_id: int, source_id: int, time_ns: int, target: str,
+                    source: str) -> tuple[Pose7, int]:
+        if time_ns == 0:
+            time_ns = self._latest_common_time(target_id, source_id, target, source)
+        pose = self._walk(time_ns, target_id, source_id, target, source)
+        qx, qy, qz, qw = canonical_quat(pose[3], pose[4], pose[5], pose[6])
+        return (pose[0], pose[1], pose[2], qx, qy, qz, qw), time_ns
+
+    def lookup_full_ns(self, target: str, target_ns: int, source: str, source_ns: int,
+                       fixed: str) -> tuple[Pose7, int]:
+        """T_target_source with the source at ``source_ns`` and the target at ``target_ns`` via ``fixed``."""
+        with self._cond:
+            self._validate(target, "lookupTransform argument target_frame")
+            self._validate(source, "lookupTransform argument source_frame")
+            self._validate(fixed, "lookupTransform argument fixed_frame")
+            fixed_source, _ = self.lookup_ns(fixed, source, source_ns)
+            target_fixed, stamp = self.lookup_ns(target, fixed, target_ns)
+            pose = compose(target_fixed, fixed_source)
+            qx, qy, qz, qw = canonical_quat(pose[3], pose[4], pose[5], pose[6])
+            return (pose[0], pose[1], pose[2], qx, qy, qz, qw), stamp
+
+    def _loop_error(self, target: str, source: str) -> LookupException:
+        return LookupException("The tf tree is invalid because it contains a loop.\n"
+                               + self._frames_as_string() + "\n", target_frame=target, source_frame=source)
+
+    def _walk(self, time_ns: int, target_id: int, source_id: int, target: str, source: str) -> Pose7:
+        caches = self._caches
+        source_acc = IDENTITY
+        frame = source_id
+        top = 0
+        miss: CacheMiss | None = None
+        depth = 0
+        while frame:
+            cache = caches[frame]
+            top = frame
+            if cache is None:
+                break
+            got = cache.sample(time_ns)
+            if isinstance(got, CacheMiss):
+                miss = got
+                break
+            if frame == target_id:
+                break
+            pose, parent = got
+            source_acc = compose(pose, source_acc)
+            frame = parent
+            depth += 1
+            if depth > MAX_GRAPH_DEPTH:
+                raise self._loop_error(target, source)
+        if frame == target_id and miss is None:
+            return source_acc
+        target_acc = IDENTITY
+        frame = target_id
+        depth = 0
+        while frame != top:
+            cache = caches[frame]
+            if cache is None:
+                break
+            got = cache.sample(time_ns)
+            if isinstance(got, CacheMiss):
+                raise self._extrapolation(got, time_ns, target, source)
+            pose, parent = got
+            if frame == source_id:
+                return inverse(target_acc)
+            target_acc = compose(pose, target_acc)
+            frame = parent
+            depth += 1
+            if depth > MAX_GRAPH_DEPTH:
+                raise self._loop_error(target, source)
+        if frame != top:
+            if miss is not None:
+                raise self._extrapolation(miss, time_ns, target, source)
+            raise self._connectivity(target, source)
+        if frame == source_id:
+            return inverse(target_acc)
+        return compose(inverse(target_acc), source_acc)
+
+    def _extrapolation(self, miss: CacheMiss, time_ns: int, target: str, source: str) -> ExtrapolationException:
+        return ExtrapolationException(
+            f"{miss.message}, when looking up transform from frame [{source}] to frame [{target}]",
+            target_frame=target, source_frame=source, time_ns=time_ns,
+            earliest_ns=miss.earliest_ns, latest_ns=miss.latest_ns)
+
+    def _connectivity(self, target: str, source: str) -> ConnectivityException:
+        return ConnectivityException(
+            f"Could not find a connection between '{target}' and '{source}' because they are not part of "
+            "the same tree.Tf has two or more unconnected trees.", target_frame=target, source_frame=source)
+
+    def _latest_common_time(self, target_id: int, source_id: int, target: str, source: str) -> int:
+        caches = self._caches
+        if source_id == target_id:
+            cache = caches[source_id]
+            return cache.latest()[0] if cache is not None else 0
+        chain: list[tuple[int, int]] = []  # (stamp, parent) walking up from source
+        frame = source_id
+        common = 2**63
+        depth = 0
+        while frame:
+            cache = caches[frame]
+            if cache is None or len(cache) == 0:
+                break
+            stamp, parent = cache.latest()
+            if parent == 0:
+                break
+            if stamp:
+                common = min(common, stamp)
+            chain.append((stamp, parent))
+            if parent == target_id:
+                return 0 if common == 2**63 else common
+            frame = parent
+            depth += 1
+            if depth > MAX_GRAPH_DEPTH:
+                raise self._loop_error(target, source)
+        parents = [p for _, p in chain]
+        frame = target_id
+        common_t = 2**63
+        depth = 0
+        ancestor = 0
+        while frame:
+            cache = caches[frame]
+            if cache is None or len(cache) == 0:
+                break
+            stamp, parent = cache.latest()
+            if parent == 0:
+                break
+            if stamp:
+                common_t = min(common_t, stamp)
+            if parent in parents:
+                ancestor = parent
+                break
+            frame = parent
+            if frame == source_id:
+                return 0 if common_t == 2**63 else common_t
+            depth += 1
+            if depth > MAX_GRAPH_DEPTH:
+                raise self._loop_error(target, source)
+        if not ancestor:
+            raise self._connectivity(target, source)
+        for stamp, parent in chain:
+            if stamp:
+                common_t = min(common_t, stamp)
+            if parent == ancestor:
+                break
+        return 0 if common_t == 2**63 else common_t
+
+    def can_transform_ns(self, target: str, source: str, time_ns: int) -> tuple[bool, str]:
+        """(True, '') when ``lookup_ns`` would succeed, else (False, its error text)."""
+        try:
+            self.lookup_ns(target, source, time_ns)
+        except TransformException as exc:
+            return False, str(exc)
+        return True, ""
+
+    # ------------------------------------------------------------- reporting
+    def frames(self) -> dict[str, str]:
+        """Every frame that has data, mapped to its current (newest) parent."""
+        with self._cond:
+            out = {}
+            for fid, cache in enumerate(self._caches):
+                if cache is not None and len(cache):
+                    out[self._names[fid]] = self._names[cache.latest()[1]]
+            return out
+
+    def all_frame_names(self) -> list[str]:
+        """All known frame names in order of first appearance (roots included)."""
+        with self._cond:
+            return self._names[1:]
+
+    def _frames_as_string(self) -> str:
+        lines = []
+        for fid, cache in enumerate(self._caches):
+            if cache is None:
+                continue
+            parent = self._names[cache.latest()[1]] if len(cache) else "NO_PARENT"
+            lines.append(f"Frame {self._names[fid]} exists with parent {parent}.\n")
+        return "".join(lines)
+
+    def all_frames_as_string(self) -> str:
+        """tf2's allFramesAsString: one line per frame with data."""
+        with self._cond:
+            return self._frames_as_string()
+
+    def all_frames_as_yaml(self, current_time_ns: int = 0) -> str:
+        """tf2's allFramesAsYAML (the text view_frames parses)."""
+        with self._cond:
+            if len(self._names) == 1:
+                return "[]"
+            out = []
+            for fid, cache in enumerate(self._caches):
+                if cache is None or not len(cache):
+                    continue
+                newest, parent = cache.latest()
+                oldest = cache.oldest_stamp()
+                span = max(newest - oldest, 100_000)
+                rate = len(cache) * 1e9 / span
+                out.append(f"{self._names[fid]}: \n  parent: '{self._names[parent]}'\n"
+                           f"  broadcaster: '{self._authority.get(fid, 'no recorded authority')}'\n"
+                           f"  rate: {rate:.3f}\n  most_recent_transform: {format_time(newest)}\n"
+                           f"  oldest_transform: {format_time(oldest)}\n")
+                if current_time_ns:
+                    out.append(f"  transform_delay: {(current_time_ns - newest) / 1e9:.3f}\n")
+                out.append(f"  buffer_length: {(newest - oldest) / 1e9:.3f}\n")
+            return "".join(out)
+
+    def clear(self) -> None:
+        """Empty every dynamic cache; static transforms and frame names stay."""
+        with self._cond:
+            for cache in self._caches:
+                if cache is not None:
+                    cache.clear()
