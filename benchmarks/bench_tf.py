@@ -12,10 +12,12 @@ Run: python benchmarks/bench_tf.py [--hour]   (--hour simulates a full hour, whi
 
 from __future__ import annotations
 
+import itertools
 import statistics
 import sys
 import time
 import tracemalloc
+from collections.abc import Callable
 
 import numpy as np
 from pytransform3d.transform_manager import NumpyTimeseriesTransform, TemporalTransformManager
@@ -40,7 +42,7 @@ def chain_data(samples: int) -> tuple[np.ndarray, dict[tuple[str, str], tuple[np
     rng = np.random.default_rng(0)
     stamps = np.arange(1, samples + 1) * (SEC // 100)  # 100 Hz
     data = {}
-    for parent, child in zip(CHAIN, CHAIN[1:], strict=False):
+    for parent, child in itertools.pairwise(CHAIN):
         # Smooth motion, as real TF streams are: small steps between consecutive samples.
         axis = rng.normal(size=3)
         axis /= np.linalg.norm(axis)
@@ -50,7 +52,7 @@ def chain_data(samples: int) -> tuple[np.ndarray, dict[tuple[str, str], tuple[np
     return stamps, data
 
 
-def median_per_call(fn, n: int, repeats: int = 7) -> float:
+def median_per_call(fn: Callable[[], object], n: int, repeats: int = 7) -> float:
     samples = []
     for _ in range(repeats):
         start = time.perf_counter()

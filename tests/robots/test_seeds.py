@@ -9,9 +9,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+import robotmodel.robots
 from conftest import CHECK_URDF_BIN, urdfdom_env
 
-import robotmodel.robots
 from robotmodel.kinematics import KinematicModel, KinematicState
 from robotmodel.xacro import expand
 
@@ -28,7 +28,7 @@ def seed(request) -> tuple[str, str]:
 
 
 def test_urdfdom_accepts(seed, tmp_path: Path) -> None:
-    name, text = seed
+    _name, text = seed
     path = tmp_path / "robot.urdf"
     path.write_text(text, encoding="utf-8")
     result = subprocess.run([str(CHECK_URDF_BIN), str(path)], capture_output=True, text=True, env=urdfdom_env(),

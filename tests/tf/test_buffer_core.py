@@ -150,7 +150,7 @@ def test_loop_is_a_lookup_exception(buf: Buffer) -> None:
     buf.set_transform_static(make("a", "b"), "me")
     buf.set_transform_static(make("b", "a"), "me")
     buf.set_transform_static(make("c", "d"), "me")
-    with pytest.raises(LookupException, match="The tf tree is invalid because it contains a loop.") as info:
+    with pytest.raises(LookupException, match=r"The tf tree is invalid because it contains a loop\.") as info:
         buf.lookup_transform("d", "a", Time())
     assert "Frame b exists with parent a." in str(info.value)
 
@@ -176,7 +176,7 @@ def test_parent_change_over_time_is_never_interpolated(buf: Buffer) -> None:
 
 def test_cache_window_prunes_and_rejects_old_data(buf: Buffer, caplog) -> None:
     small = Buffer(cache_time=Duration(seconds=10))
-    for s in range(0, 31):
+    for s in range(31):
         small.set_transform(make("a", "b", sec=s + 1), "me")
     with pytest.raises(ExtrapolationException, match="into the past"):
         small.lookup_transform("a", "b", Time(seconds=5))
