@@ -7,6 +7,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+import robotmodel.robots
 import yourdfpy
 from conftest import BUNDLED, ERD_ROBOTS, erd_urdfs
 
@@ -72,7 +73,8 @@ def test_round_trip(path: Path) -> None:
 
 
 def _bundled() -> list[Path]:
-    return sorted(p for p in BUNDLED.rglob("*") if p.suffix in (".xacro", ".urdf"))
+    # Robots only: included macro files such as inertia_macros.xacro are not robots.
+    return [BUNDLED / name for name in robotmodel.robots.names()]
 
 
 @pytest.mark.parametrize("path", _bundled(), ids=lambda p: p.name)
