@@ -54,10 +54,6 @@ class Buffer(BufferCore):
     def __init__(self, cache_time: Duration | None = None) -> None:
         super().__init__(to_nanoseconds(cache_time) if cache_time is not None else 10_000_000_000)
 
-    def set_transform(self, transform: TransformStamped, authority: str, is_static: bool = False) -> bool:
-        """Insert a dynamic transform (tf2's ``setTransform``); False when rejected (see the log)."""
-        return super().set_transform(transform, authority, is_static)
-
     def set_transform_static(self, transform: TransformStamped, authority: str) -> bool:
         """Insert a static transform, valid at all times."""
         return super().set_transform(transform, authority, True)
@@ -79,7 +75,11 @@ class Buffer(BufferCore):
                             target_frame=exc.target_frame, source_frame=exc.source_frame,
                             time_ns=exc.time_ns, earliest_ns=exc.earliest_ns, latest_ns=exc.latest_ns,
                         ) from exc
-                    self._cond.wait(remaining)
+                    self._waiting += 1
+                    try:
+                        self._cond.wait(remaining)
+                    finally:
+                        self._waiting -= 1
 
     def lookup_transform(self, target_frame: str, source_frame: str, time: Any,
                          timeout: Any = None) -> TransformStamped:

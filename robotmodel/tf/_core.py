@@ -12,6 +12,7 @@ from __future__ import annotations
 import logging
 import math
 import threading
+from typing import Any
 
 from robotmodel.errors import (
     ConnectivityException,
@@ -43,17 +44,57 @@ class BufferCore:
         self._caches: list[TimeCache | StaticCache | None] = [None]
         self._authority: dict[int, str] = {}
         self._cond = threading.Condition(threading.RLock())
+        # Threads blocked in a timed lookup; inserts only notify when there are some.
+        self._waiting = 0
 
     # ----------------------------------------------------------------- insert
     def set_transform(self, transform: TransformStamped, authority: str, is_static: bool = False) -> bool:
         """Insert a transform; invalid ones are logged with tf2's texts and not stored."""
         parent = transform.header.frame_id
         child = transform.child_frame_id
-        parent = parent[1:] if parent.startswith("/") else parent
-        child = child[1:] if child.startswith("/") else child
+        if parent[:1] == "/":
+            parent = parent[1:]
+        if child[:1] == "/":
+            child = child[1:]
         tr = transform.transform.translation
         rot = transform.transform.rotation
         x, y, z = float(tr.x), float(tr.y), float(tr.z)
+        rx, ry, rz, rw = float(rot.x), float(rot.y), float(rot.z), float(rot.w)
+        total = x + y + z + rx + ry + rz + rw
+        n2 = rx * rx + ry * ry + rz * rz + rw * rw
+        if child and parent and child != parent and total - total == 0.0 and rw > 0.5 and abs(n2 - 1.0) < 1e-12:
+            # Common case: valid ids, finite, already a unit quaternion in tf2's sign (w > 0.5
+            # means a positive matrix trace), so tf2's matrix round trip would return it as is.
+            values: Pose7 = (x, y, z, rx, ry, rz, rw)
+        elif not self._valid(x, y, z, rot, parent, child, authority):
+            return False
+        else:
+            qx, qy, qz, qw = canonical_quat(rx, ry, rz, rw)
+            values = (x, y, z, qx, qy, qz, qw)
+        stamp = transform.header.stamp
+        stamp_ns = int(stamp.sec) * 1_000_000_000 + int(stamp.nanosec)
+        with self._cond:
+            child_id = self._ids.get(child) or self._intern(child)
+            cache = self._caches[child_id]
+            # ROS 2 switches a frame between static and dynamic, dropping its history.
+            if is_static:
+                if not isinstance(cache, StaticCache):
+                    cache = self._caches[child_id] = StaticCache(values, 0)
+            elif not isinstance(cache, TimeCache):
+                cache = self._caches[child_id] = TimeCache(self.cache_time_ns)
+            parent_id = self._ids.get(parent) or self._intern(parent)
+            if not cache.insert(stamp_ns, values, parent_id):
+                _log.warning("TF_OLD_DATA ignoring data from the past for frame %s at time %s according to "
+                             "authority %s\nPossible reasons are listed at "
+                             "http://wiki.ros.org/tf/Errors%%20explained", child, format_time(stamp_ns), authority)
+                return False
+            self._authority[child_id] = authority
+            if self._waiting:
+                self._cond.notify_all()
+        return True
+
+    def _valid(self, x: float, y: float, z: float, rot: Any, parent: str, child: str, authority: str) -> bool:
+        """tf2's checks, each logged with its text; False when any fails."""
         ok = True
         try:
             qx, qy, qz, qw = canonical_quat(float(rot.x), float(rot.y), float(rot.z), float(rot.w))
@@ -72,7 +113,7 @@ class BufferCore:
                        "because frame_id not set", child, authority)
             ok = False
         values = (x, y, z, qx, qy, qz, qw)
-        if any(math.isnan(v) for v in values) or any(math.isinf(v) for v in values):
+        if any(math.isnan(v) or math.isinf(v) for v in values):
             _log.error('TF_NAN_INPUT: Ignoring transform for child_frame_id "%s" from authority "%s" because '
                        "of a nan value in the transform (%f %f %f) (%f %f %f %f)", child, authority,
                        x, y, z, rot.x, rot.y, rot.z, rot.w)
@@ -82,28 +123,7 @@ class BufferCore:
                        '"%s" because of an invalid quaternion in the transform (%f %f %f %f)', child,
                        authority, rot.x, rot.y, rot.z, rot.w)
             ok = False
-        if not ok:
-            return False
-        stamp = int(transform.header.stamp.sec) * 1_000_000_000 + int(transform.header.stamp.nanosec)
-        with self._cond:
-            child_id = self._intern(child)
-            cache = self._caches[child_id]
-            # ROS 2 switches a frame between static and dynamic, dropping its history.
-            if is_static and not isinstance(cache, StaticCache):
-                cache = StaticCache(values, 0)
-            elif not is_static and not isinstance(cache, TimeCache):
-                cache = TimeCache(self.cache_time_ns)
-            assert cache is not None
-            self._caches[child_id] = cache
-            parent_id = self._intern(parent)
-            if not cache.insert(stamp, values, parent_id):
-                _log.warning("TF_OLD_DATA ignoring data from the past for frame %s at time %s according to "
-                             "authority %s\nPossible reasons are listed at "
-                             "http://wiki.ros.org/tf/Errors%%20explained", child, format_time(stamp), authority)
-                return False
-            self._authority[child_id] = authority
-            self._cond.notify_all()
-        return True
+        return ok
 
     def _intern(self, name: str) -> int:
         found = self._ids.get(name)
@@ -166,7 +186,7 @@ class BufferCore:
 
     def _walk(self, time_ns: int, target_id: int, source_id: int, target: str, source: str) -> Pose7:
         caches = self._caches
-        source_acc = IDENTITY
+        source_acc: Pose7 | None = None
         frame = source_id
         top = 0
         miss: CacheMiss | None = None
@@ -183,14 +203,16 @@ class BufferCore:
             if frame == target_id:
                 break
             pose, parent = got
-            source_acc = compose(pose, source_acc)
+            source_acc = pose if source_acc is None else compose(pose, source_acc)
             frame = parent
             depth += 1
             if depth > MAX_GRAPH_DEPTH:
                 raise self._loop_error(target, source)
+        if source_acc is None:
+            source_acc = IDENTITY
         if frame == target_id and miss is None:
             return source_acc
-        target_acc = IDENTITY
+        target_acc: Pose7 | None = None
         frame = target_id
         depth = 0
         while frame != top:
@@ -202,8 +224,8 @@ class BufferCore:
                 raise self._extrapolation(got, time_ns, target, source)
             pose, parent = got
             if frame == source_id:
-                return inverse(target_acc)
-            target_acc = compose(pose, target_acc)
+                return inverse(target_acc or IDENTITY)
+            target_acc = pose if target_acc is None else compose(pose, target_acc)
             frame = parent
             depth += 1
             if depth > MAX_GRAPH_DEPTH:
@@ -212,6 +234,8 @@ class BufferCore:
             if miss is not None:
                 raise self._extrapolation(miss, time_ns, target, source)
             raise self._connectivity(target, source)
+        if target_acc is None:
+            return IDENTITY if frame == source_id else source_acc
         if frame == source_id:
             return inverse(target_acc)
         return compose(inverse(target_acc), source_acc)

@@ -66,6 +66,10 @@ def canonical_quat(x: float, y: float, z: float, w: float) -> tuple[float, float
     n2 = x * x + y * y + z * z + w * w
     if not n2 > 0.0 or math.isinf(n2):
         raise ValueError("quaternion has zero or non-finite norm")
+    if w * w > 0.25 * n2 and w > 0.0:
+        # Positive matrix trace: tf2's round trip returns q/|q| (up to rounding).
+        inv = 1.0 / math.sqrt(n2)
+        return (x * inv, y * inv, z * inv, w * inv)
     s = 2.0 / n2
     m00 = 1.0 - s * (y * y + z * z)
     m01 = s * (x * y - z * w)

@@ -28,10 +28,10 @@ class _Irregular(Exception):
 
 
 def _compose(a: F, b: F) -> F:
-    ax, ay, az, qx, qy, qz, qw = (a[:, k] for k in range(7))
-    bx, by, bz, rx, ry, rz, rw = (b[:, k] for k in range(7))
+    ax, ay, az, qx, qy, qz, qw = a
+    bx, by, bz, rx, ry, rz, rw = b
     cx, cy, cz = qy * bz - qz * by, qz * bx - qx * bz, qx * by - qy * bx
-    return np.stack([
+    return np.array([
         ax + bx + 2.0 * (qw * cx + qy * cz - qz * cy),
         ay + by + 2.0 * (qw * cy + qz * cx - qx * cz),
         az + bz + 2.0 * (qw * cz + qx * cy - qy * cx),
@@ -39,58 +39,88 @@ def _compose(a: F, b: F) -> F:
         qw * ry - qx * rz + qy * rw + qz * rx,
         qw * rz + qx * ry - qy * rx + qz * rw,
         qw * rw - qx * rx - qy * ry - qz * rz,
-    ], axis=1)
+    ])
 
 
 def _inverse(a: F) -> F:
     inv = np.zeros_like(a)
-    inv[:, 3:6] = -a[:, 3:6]
-    inv[:, 6] = a[:, 6]
+    inv[3:6] = -a[3:6]
+    inv[6] = a[6]
     point = np.zeros_like(a)
-    point[:, :3] = a[:, :3]
-    point[:, 6] = 1.0
-    inv[:, :3] = -_compose(inv, point)[:, :3]
+    point[:3] = a[:3]
+    point[6] = 1.0
+    inv[:3] = -_compose(inv, point)[:3]
     return inv
 
 
 def _snapshot(cache: TimeCache) -> tuple[npt.NDArray[np.int64], F, npt.NDArray[np.int64]]:
     snap = cache.snap
     if snap is None or snap[0] != cache.version:
-        snap = (cache.version, np.array(cache.stamps, dtype=np.int64),
-                np.array(cache.data, dtype=np.float64).reshape(-1, 7), np.array(cache.parents, dtype=np.int64))
+        # Column-major (7, n): gathering one column at a time is much cheaper than rows.
+        data = np.ascontiguousarray(np.array(cache.data, dtype=np.float64).reshape(-1, 7).T)
+        snap = (cache.version, np.array(cache.stamps, dtype=np.int64), data, np.array(cache.parents, dtype=np.int64))
         cache.snap = snap
     return snap[1], snap[2], snap[3]
 
 
-def _sample(cache: TimeCache | StaticCache, t: npt.NDArray[np.int64]) -> tuple[F, int]:
+class _Index:
+    """searchsorted results shared by links whose caches hold the same stamps (published together)."""
+
+    def __init__(self, t: npt.NDArray[np.int64]) -> None:
+        self.t = t
+        self.stamps: npt.NDArray[np.int64] | None = None
+        self.i: npt.NDArray[np.intp] | None = None
+        self.j: npt.NDArray[np.intp] | None = None
+        self.r: F | None = None
+
+    def lookup(self, stamps: npt.NDArray[np.int64]) -> tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], F]:
+        if self.stamps is None or not np.array_equal(self.stamps, stamps):
+            n = stamps.shape[0]
+            i = np.searchsorted(stamps, self.t, side="right") - 1
+            j = np.minimum(i + 1, n - 1)
+            t0, t1 = stamps[i], stamps[j]
+            span = (t1 - t0).astype(np.float64)
+            # r = 0 where there is no newer neighbour (exactly on the newest sample).
+            self.r = np.divide((self.t - t0).astype(np.float64), span, out=np.zeros(span.shape), where=span > 0)
+            self.stamps, self.i, self.j = stamps, i, j
+        assert self.i is not None and self.j is not None and self.r is not None
+        return self.i, self.j, self.r
+
+
+def _sample(cache: TimeCache | StaticCache, index: _Index) -> tuple[F, int]:
+    t = index.t
     if isinstance(cache, StaticCache):
-        return np.broadcast_to(np.asarray(cache.pose, dtype=np.float64), (t.shape[0], 7)), cache.parent
+        return np.broadcast_to(np.asarray(cache.pose, dtype=np.float64)[:, None], (7, t.shape[0])), cache.parent
     stamps, data, parents = _snapshot(cache)
     n = stamps.shape[0]
     if n < 2 or t.min() < stamps[0] or t.max() > stamps[-1]:
         raise _Irregular
-    i = np.searchsorted(stamps, t, side="right") - 1
-    j = np.minimum(i + 1, n - 1)
-    if np.any(parents[i] != parents[i[0]]) or np.any(parents[j] != parents[i[0]]):
+    i, j, r = index.lookup(stamps)
+    first = parents[i[0]]
+    if np.any(parents[i] != first) or np.any(parents[j] != first):
         raise _Irregular  # a parent switch inside the span: scalar walk picks per stamp
-    t0, t1 = stamps[i], stamps[j]
-    span = (t1 - t0).astype(np.float64)
-    r = np.where(span > 0, (t - t0) / np.where(span > 0, span, 1.0), 0.0)
-    a, b = data[i], data[j]
-    # Exactly on the newest sample there is no newer neighbour: tf2 returns it as is.
-    at_newest = i == n - 1
-    equal = (span == 0) & ~at_newest
-    dot = np.sum(a[:, 3:] * b[:, 3:], axis=1)
-    theta = np.arccos(np.clip(np.abs(dot), -1.0, 1.0))
+    # Equal stamps (a repeated sample) take the newer one, as tf2.
+    equal_stamps = (stamps[j] == stamps[i]) & (i != j)
+    a = [data[k][i] for k in range(7)]
+    b = [data[k][j] for k in range(7)]
+    u = 1.0 - r
+    dot = a[3] * b[3] + a[4] * b[4] + a[5] * b[5] + a[6] * b[6]
+    theta = np.arccos(np.minimum(np.abs(dot), 1.0))
     sin_t = np.sin(theta)
-    safe = np.where(theta == 0.0, 1.0, sin_t)
-    wa = np.where(theta == 0.0, 1.0, np.sin((1.0 - r) * theta) / safe)
-    wb = np.where(theta == 0.0, 0.0, np.sin(r * theta) / safe) * np.where(dot < 0.0, -1.0, 1.0)
-    out = np.empty_like(a)
-    out[:, :3] = a[:, :3] * (1.0 - r)[:, None] + b[:, :3] * r[:, None]
-    out[:, 3:] = a[:, 3:] * wa[:, None] + b[:, 3:] * wb[:, None]
-    out = np.where(equal[:, None], b, out)
-    return out, int(parents[i[0]])
+    zero = theta == 0.0
+    safe = np.where(zero, 1.0, sin_t)
+    wa = np.where(zero, 1.0, np.sin(u * theta) / safe)
+    wb = np.where(zero, 0.0, np.sin(r * theta) / safe)
+    np.negative(wb, out=wb, where=dot < 0.0)
+    out = np.empty((7, t.shape[0]))
+    for k in range(3):
+        out[k] = a[k] * u + b[k] * r
+    for k in range(3, 7):
+        out[k] = a[k] * wa + b[k] * wb
+    if equal_stamps.any():
+        for k in range(7):
+            out[k] = np.where(equal_stamps, b[k], out[k])
+    return out, int(first)
 
 
 def _canonical(q: F) -> F:
@@ -131,7 +161,8 @@ def _canonical(q: F) -> F:
 def _walk(core: BufferCore, t: npt.NDArray[np.int64], target_id: int, source_id: int) -> F:
     caches = core._caches
     n = t.shape[0]
-    source_acc = np.tile(np.asarray(IDENTITY), (n, 1))
+    index = _Index(t)
+    source_acc = np.tile(np.asarray(IDENTITY)[:, None], (1, n))
     frame, top = source_id, 0
     chain = set()
     while frame:
@@ -142,14 +173,14 @@ def _walk(core: BufferCore, t: npt.NDArray[np.int64], target_id: int, source_id:
         top = frame
         if cache is None or frame == target_id:
             if cache is not None:
-                _sample(cache, t)  # tf2 samples the target's own link: a miss must surface
+                _sample(cache, index)  # tf2 samples the target's own link: a miss must surface
             break
-        pose, parent = _sample(cache, t)
+        pose, parent = _sample(cache, index)
         source_acc = _compose(pose, source_acc)
         frame = parent
     if frame == target_id:
         return source_acc
-    target_acc = np.tile(np.asarray(IDENTITY), (n, 1))
+    target_acc = np.tile(np.asarray(IDENTITY)[:, None], (1, n))
     frame = target_id
     seen = set()
     while frame != top:
@@ -159,7 +190,7 @@ def _walk(core: BufferCore, t: npt.NDArray[np.int64], target_id: int, source_id:
         cache = caches[frame]
         if cache is None:
             raise _Irregular  # not connected: the scalar walk builds the message
-        pose, parent = _sample(cache, t)
+        pose, parent = _sample(cache, index)
         if frame == source_id:
             return _inverse(target_acc)
         target_acc = _compose(pose, target_acc)
@@ -184,7 +215,7 @@ def lookup_many(core: BufferCore, target: str, source: str,
         stamps = np.where(stamps == 0, latest, stamps)
     try:
         poses = _walk(core, stamps, target_id, source_id)
-        return poses[:, :3].copy(), _canonical(poses[:, 3:])
+        return np.ascontiguousarray(poses[:3].T), _canonical(np.ascontiguousarray(poses[3:].T))
     except _Irregular:
         out = np.array([core._lookup_ids(target_id, source_id, int(s), target, source)[0] for s in stamps])
         return out[:, :3].copy(), out[:, 3:].copy()
