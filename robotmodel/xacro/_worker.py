@@ -76,6 +76,17 @@ def _install_hooks(req: dict[str, Any]) -> None:
     sa._eval_dict["find"] = find
     xacro._global_symbols.setdefault("find", find)
 
+    # xacro 2.1.1 never gives $(dirname) a file name; answer with the file being processed.
+    original_dirname = sa._eval_dirname
+
+    def dirname(filename: str | None = None) -> str:
+        current = next((f for f in reversed(xacro.filestack or []) if f), None)
+        if current is None:
+            return str(original_dirname(filename))
+        return os.path.dirname(os.path.abspath(current))
+
+    sa._eval_dirname = dirname
+
     original_abs = xacro.abs_filename_spec
 
     def abs_filename_spec(spec: str) -> str:

@@ -194,3 +194,15 @@ def test_untrusted_refuses_env_and_outside_reads(tmp_path: Path) -> None:
         expand(include_doc, untrusted=True)
     result = _cli("xacro", str(include_doc), "--untrusted")
     assert result.returncode == 1 and "outside the input's package roots" in result.stderr
+
+
+def test_dirname_is_the_directory_of_the_file_being_processed(tmp_path: Path) -> None:
+    # xacro 2.1.1 fails every $(dirname); ours answers as ROS 1 xacro did, includes too.
+    (tmp_path / "sub").mkdir()
+    (tmp_path / "sub" / "inc.xacro").write_text(f'<robot {XACRO_NS}><link name="$(dirname)"/></robot>',
+                                                encoding="utf-8")
+    top = tmp_path / "top.xacro"
+    top.write_text(f'<robot {XACRO_NS} name="r"><link name="$(dirname)"/>'
+                   '<xacro:include filename="sub/inc.xacro"/></robot>', encoding="utf-8")
+    out = expand(top)
+    assert f'<link name="{tmp_path}"/>' in out and f'<link name="{tmp_path / "sub"}"/>' in out
