@@ -22,20 +22,14 @@ from collections.abc import Callable
 import numpy as np
 from pytransform3d.transform_manager import NumpyTimeseriesTransform, TemporalTransformManager
 
-from robotmodel.tf import Buffer, Time, TransformStamped
+from robotmodel.tf import Buffer, Time, TransformStamped, make_transform
 
 SEC = 1_000_000_000
 CHAIN = ["map", "odom", "base", "torso", "arm", "tool"]
 
 
 def message(parent: str, child: str, stamp_ns: int, xyz: np.ndarray, quat: np.ndarray) -> TransformStamped:
-    t = TransformStamped()
-    t.header.frame_id, t.child_frame_id = parent, child
-    t.header.stamp = Time(nanoseconds=stamp_ns)
-    tr, r = t.transform.translation, t.transform.rotation
-    tr.x, tr.y, tr.z = (float(v) for v in xyz)
-    r.x, r.y, r.z, r.w = (float(v) for v in quat)
-    return t
+    return make_transform(parent, child, xyz, quat, stamp_ns)
 
 
 def chain_data(samples: int) -> tuple[np.ndarray, dict[tuple[str, str], tuple[np.ndarray, np.ndarray]]]:

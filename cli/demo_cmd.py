@@ -12,7 +12,7 @@ import robotmodel.robots
 from robotmodel.check import lint, tree_report
 from robotmodel.kinematics import KinematicModel, KinematicState, joint_transforms, static_transforms
 from robotmodel.model import load
-from robotmodel.tf import Buffer, Time, TransformStamped
+from robotmodel.tf import Buffer, Time, make_transform
 
 
 def register(sub: Any) -> None:
@@ -20,16 +20,6 @@ def register(sub: Any) -> None:
     parser: argparse.ArgumentParser = sub.add_parser(
         "demo", help="tour the toolkit on the bundled robots: check, FK, robot_state_publisher, TF lookups")
     parser.set_defaults(func=run)
-
-
-def _stamped(parent: str, child: str, stamp_ns: int, xyz: Any, quat: Any) -> TransformStamped:
-    t = TransformStamped()
-    t.header.frame_id, t.child_frame_id = parent, child
-    t.header.stamp = Time(nanoseconds=stamp_ns)
-    tr, r = t.transform.translation, t.transform.rotation
-    tr.x, tr.y, tr.z = (float(v) for v in xyz)
-    r.x, r.y, r.z, r.w = (float(v) for v in quat)
-    return t
 
 
 def run(args: argparse.Namespace) -> int:
@@ -58,20 +48,20 @@ def run(args: argparse.Namespace) -> int:
     buffer = Buffer()
     statics = static_transforms(model)
     for k in range(len(statics.joints)):
-        buffer.set_transform_static(_stamped(statics.parents[k], statics.children[k], 0,
-                                             statics.translations[k], statics.rotations[k]),
+        buffer.set_transform_static(make_transform(statics.parents[k], statics.children[k],
+                                                   statics.translations[k], statics.rotations[k]),
                                     "robot_state_publisher")
-    buffer.set_transform_static(_stamped("map", "odom", 0, (1.0, 2.0, 0.0), (0, 0, 0, 1)), "static_transform_publisher")
+    buffer.set_transform_static(make_transform("map", "odom", (1.0, 2.0, 0.0)), "static_transform_publisher")
     start = 1_700_000_000 * 1_000_000_000
     for i in range(51):  # one second of driving in a circle at 50 Hz
         t_ns = start + i * 20_000_000
         yaw = 0.5 * i / 50
-        buffer.set_transform(_stamped("odom", "base_footprint", t_ns, (math.sin(yaw), 1 - math.cos(yaw), 0.0),
-                                      (0, 0, math.sin(yaw / 2), math.cos(yaw / 2))), "odometry")
+        buffer.set_transform(make_transform("odom", "base_footprint", (math.sin(yaw), 1 - math.cos(yaw), 0.0),
+                                            (0, 0, math.sin(yaw / 2), math.cos(yaw / 2)), t_ns), "odometry")
         wheels = joint_transforms(model, {"left_wheel_joint": 10.0 * i / 50, "right_wheel_joint": 9.0 * i / 50})
         for k in range(len(wheels.joints)):
-            buffer.set_transform(_stamped(wheels.parents[k], wheels.children[k], t_ns, wheels.translations[k],
-                                          wheels.rotations[k]), "robot_state_publisher")
+            buffer.set_transform(make_transform(wheels.parents[k], wheels.children[k], wheels.translations[k],
+                                                wheels.rotations[k], t_ns), "robot_state_publisher")
     when = Time(nanoseconds=start + 505_000_000)
     cam = buffer.lookup_transform("map", "camera_link", when)
     tr, q = cam.transform.translation, cam.transform.rotation

@@ -8,18 +8,7 @@ from __future__ import annotations
 import robotmodel.robots
 
 from robotmodel.kinematics import KinematicModel, joint_transforms, static_transforms
-from robotmodel.tf import Buffer, Time, TransformStamped
-
-
-def to_message(parent: str, child: str, translation: object, rotation: object, stamp: Time) -> TransformStamped:
-    """A TransformStamped from translation (x, y, z) and rotation (x, y, z, w) sequences."""
-    t = TransformStamped()
-    t.header.frame_id, t.child_frame_id, t.header.stamp = parent, child, stamp
-    tx, ty, tz = (float(v) for v in translation)  # type: ignore[attr-defined]
-    qx, qy, qz, qw = (float(v) for v in rotation)  # type: ignore[attr-defined]
-    t.transform.translation.x, t.transform.translation.y, t.transform.translation.z = tx, ty, tz
-    t.transform.rotation.x, t.transform.rotation.y, t.transform.rotation.z, t.transform.rotation.w = qx, qy, qz, qw
-    return t
+from robotmodel.tf import Buffer, Time, make_transform
 
 
 def main() -> None:
@@ -28,15 +17,16 @@ def main() -> None:
     buffer = Buffer()
     statics = static_transforms(model)  # /tf_static: fixed joints
     for k in range(len(statics.joints)):
-        buffer.set_transform_static(to_message(statics.parents[k], statics.children[k], statics.translations[k],
-                                               statics.rotations[k], Time()), "robot_state_publisher")
+        buffer.set_transform_static(make_transform(statics.parents[k], statics.children[k], statics.translations[k],
+                                                   statics.rotations[k]), "robot_state_publisher")
     stamp = Time(seconds=1.0)
+    stamp_ns = stamp.nanoseconds
     state = {"arm_base_joint": 0.3, "arm_shoulder_joint": 0.5, "arm_elbow_joint": -0.8,
              "gripper_left_finger_joint": 0.01}
     moving = joint_transforms(model, state)  # /tf: joints in the message, plus their mimics
     for k in range(len(moving.joints)):
-        buffer.set_transform(to_message(moving.parents[k], moving.children[k], moving.translations[k],
-                                        moving.rotations[k], stamp), "robot_state_publisher")
+        buffer.set_transform(make_transform(moving.parents[k], moving.children[k], moving.translations[k],
+                                            moving.rotations[k], stamp_ns), "robot_state_publisher")
     print("published:", ", ".join(moving.joints))
     # Joints absent from the message are not published, exactly as robot_state_publisher: the wrist
     # joints are missing, so the gripper is not connected yet.
@@ -44,8 +34,8 @@ def main() -> None:
     rest = dict.fromkeys(("arm_wrist_pitch_joint", "arm_wrist_roll_joint", "arm_wrist_yaw_joint"), 0.0)
     more = joint_transforms(model, rest)
     for k in range(len(more.joints)):
-        buffer.set_transform(to_message(more.parents[k], more.children[k], more.translations[k],
-                                        more.rotations[k], stamp), "robot_state_publisher")
+        buffer.set_transform(make_transform(more.parents[k], more.children[k], more.translations[k],
+                                            more.rotations[k], stamp_ns), "robot_state_publisher")
     t = buffer.lookup_transform("world", "gripper_palm_link", stamp)
     p = t.transform.translation
     print(f"gripper_palm_link in world at t=1 s: [{p.x:.4f}, {p.y:.4f}, {p.z:.4f}]")

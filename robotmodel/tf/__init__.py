@@ -28,6 +28,7 @@ from robotmodel.tf._msgs import (
     TransformStamped,
     Vector3,
     Vector3Stamped,
+    make_transform,
 )
 from robotmodel.tf._time import Duration, Time
 from robotmodel.tf._view import view_frames_gv, write_view_frames
@@ -54,6 +55,7 @@ __all__ = [
     "TransformStamped",
     "Vector3",
     "Vector3Stamped",
+    "make_transform",
     "view_frames_gv",
     "write_view_frames",
 ]

@@ -7,6 +7,7 @@ written against rclpy carries over with only its imports changed.
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 
 from robotmodel.tf._time import Time
@@ -22,6 +23,7 @@ __all__ = [
     "TransformStamped",
     "Vector3",
     "Vector3Stamped",
+    "make_transform",
 ]
 
 
@@ -108,3 +110,15 @@ class Vector3Stamped:
 
     header: Header = field(default_factory=Header)
     vector: Vector3 = field(default_factory=Vector3)
+
+
+def make_transform(parent: str, child: str, translation: Iterable[float] = (0.0, 0.0, 0.0),
+                   rotation: Iterable[float] = (0.0, 0.0, 0.0, 1.0), stamp_ns: int = 0) -> TransformStamped:
+    """A filled TransformStamped: ``child``'s pose in ``parent``, rotation as (x, y, z, w)."""
+    tx, ty, tz = (float(v) for v in translation)
+    qx, qy, qz, qw = (float(v) for v in rotation)
+    return TransformStamped(
+        header=Header(stamp=Time(nanoseconds=stamp_ns), frame_id=parent),
+        child_frame_id=child,
+        transform=Transform(Vector3(tx, ty, tz), Quaternion(qx, qy, qz, qw)),
+    )

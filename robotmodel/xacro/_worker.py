@@ -83,7 +83,7 @@ def _install_hooks(req: dict[str, Any]) -> None:
         current = next((f for f in reversed(xacro.filestack or []) if f), None)
         if current is None:
             return str(original_dirname(filename))
-        return os.path.dirname(os.path.abspath(current))  # noqa: PTH100, PTH120 - no symlink resolution, as xacro
+        return str(os.path.dirname(os.path.abspath(current)))  # noqa: PTH100, PTH120 - no symlink resolution, as xacro
 
     sa._eval_dirname = dirname
 
