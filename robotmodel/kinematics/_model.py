@@ -59,6 +59,14 @@ def _resolve_mimics(desc: RobotDescription) -> dict[str, MimicRule]:
     return rules
 
 
+def _aligned_axis(axis: FloatArray) -> tuple[int, float] | None:
+    """(index, sign) when the unit ``axis`` is exactly ±x, ±y or ±z."""
+    nonzero = np.flatnonzero(axis)
+    if nonzero.size == 1 and abs(axis[nonzero[0]]) == 1.0:
+        return int(nonzero[0]), float(np.sign(axis[nonzero[0]]))
+    return None
+
+
 @dataclass(frozen=True)
 class _Cycle:
     """The publishing cycle's fast path: every one-DoF joint, values from the variables."""
@@ -151,6 +159,8 @@ class KinematicModel:
             for _, j in description.walk()
         ]
         self._cross = [cross_matrix(axis) for axis in self.table.axis]
+        self._aligned: list[tuple[int, float] | None] = [_aligned_axis(axis) for axis in self.table.axis]
+        self._origin_identity = [bool(np.array_equal(r, np.eye(3))) for r in self.table.origin_rotation]
 
     @classmethod
     def load(cls, source: str | os.PathLike[str], args: Mapping[str, str] | None = None) -> KinematicModel:

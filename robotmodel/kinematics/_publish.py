@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 import numpy.typing as npt
@@ -18,8 +18,7 @@ __all__ = [
 ]
 
 
-@dataclass(frozen=True)
-class JointTransforms:
+class JointTransforms(NamedTuple):
     """T_parent_child for a set of joints: ``translations (J, 3)``, ``rotations (J, 4)`` as x y z w."""
 
     joints: tuple[str, ...]
@@ -121,7 +120,9 @@ def batch_link_poses(model: KinematicModel, q: npt.ArrayLike) -> tuple[FloatArra
     return rotations, translations
 
 
-_CHUNK = 8192
+_CHUNK = 16384
+# For a rotation about axis k, the (p, q) plane it turns: R = I except [p,p]=[q,q]=c, [p,q]=-s, [q,p]=s.
+_PLANE = {0: (1, 2), 1: (2, 0), 2: (0, 1)}
 
 
 def _batch_chunk(model: KinematicModel, configs: FloatArray, rotations: FloatArray,
@@ -134,15 +135,29 @@ def _batch_chunk(model: KinematicModel, configs: FloatArray, rotations: FloatArr
     rotations[root] = np.eye(3)
     translations[root] = 0.0
     scratch = np.empty((n, 3, 3))
+    identity = model._origin_identity
     for j, parent, child in model._walk_rows:
         r_parent = rotations[parent].reshape(n * 3, 3)
         # Products with constant 3x3 matrices only: BLAS does all N at once.
-        a = (r_parent @ table.origin_rotation[j]).reshape(n, 3, 3)
+        a = rotations[parent] if identity[j] else (r_parent @ table.origin_rotation[j]).reshape(n, 3, 3)
         out_t = translations[child]
         np.add(translations[parent], r_parent.dot(table.origin_translation[j]).reshape(n, 3), out=out_t)
         kind = table.kinds[j]
         out_r = rotations[child]
-        if kind == KIND_REVOLUTE:
+        aligned = model._aligned[j]
+        if kind == KIND_REVOLUTE and aligned is not None:
+            # Axis along ±x/±y/±z (most URDF joints): A·R(θ) only mixes two columns of A.
+            axis_index, sign = aligned
+            theta = values[:, j] if sign > 0 else -values[:, j]
+            c, s = np.cos(theta)[:, None], np.sin(theta)[:, None]
+            p, q = _PLANE[axis_index]
+            col_p, col_q = a[:, :, p], a[:, :, q]
+            out_r[:, :, axis_index] = a[:, :, axis_index]
+            np.multiply(col_p, c, out=out_r[:, :, p])
+            out_r[:, :, p] += col_q * s
+            np.multiply(col_q, c, out=out_r[:, :, q])
+            out_r[:, :, q] -= col_p * s
+        elif kind == KIND_REVOLUTE:
             k = model._cross[j]
             theta = values[:, j]
             b = (a.reshape(n * 3, 3) @ k).reshape(n, 3, 3)
