@@ -125,6 +125,20 @@ def _sample(cache: TimeCache | StaticCache, index: _Index) -> tuple[F, int]:
 
 def _canonical(q: F) -> F:
     """tf2's matrix round trip of each quaternion (normalize, tf2's sign choice)."""
+    n2 = np.einsum("ij,ij->i", q, q)
+    w = q[:, 3]
+    positive_trace = w * w > 0.25 * n2
+    if positive_trace.all():
+        # tf2's positive-trace branch returns q/|q| with w > 0.
+        scale: F = np.copysign(1.0 / np.sqrt(n2), w)
+        return q * scale[:, None]
+    result: F = q * np.copysign(1.0 / np.sqrt(n2), w)[:, None]
+    others = ~positive_trace
+    result[others] = _canonical_full(q[others])
+    return result
+
+
+def _canonical_full(q: F) -> F:
     n2 = np.sum(q * q, axis=1)
     s = 2.0 / n2
     x, y, z, w = q[:, 0], q[:, 1], q[:, 2], q[:, 3]
