@@ -106,3 +106,46 @@ def test_arm_gripper_fingers_move_symmetrically() -> None:
     left1, right1 = opened.link_matrix("gripper_left_finger_link")[:3, 3], opened.link_matrix("gripper_right_finger_link")[:3, 3]
     np.testing.assert_allclose(left1 - left0, -(right1 - right0), atol=1e-12)
     assert np.linalg.norm(left1 - left0) == pytest.approx(0.03)
+
+
+def _tree_from_xml(text: str) -> list[str]:
+    """check_urdf's listing rebuilt independently from the XML: root, then children by joint name, depth-first."""
+    robot = ET.fromstring(text)
+    joints = sorted(robot.findall("joint"), key=lambda j: j.get("name"))
+    children: dict[str, list[str]] = {}
+    for j in joints:
+        children.setdefault(j.find("parent").get("link"), []).append(j.find("child").get("link"))
+    child_links = {j.find("child").get("link") for j in joints}
+    (root,) = [link.get("name") for link in robot.findall("link") if link.get("name") not in child_links]
+    lines = [f"robot name is: {robot.get('name')}", "---------- Successfully Parsed XML ---------------",
+             f"root Link: {root} has {len(children.get(root, []))} child(ren)"]
+
+    def walk(link: str, depth: int) -> None:
+        for i, child in enumerate(children.get(link, []), 1):
+            lines.append("    " * depth + f"child({i}):  {child}")
+            walk(child, depth + 1)
+
+    walk(root, 1)
+    return lines
+
+
+def test_urdfdom_tree_matches_the_design(seed, tmp_path: Path) -> None:
+    name, text = seed
+    path = tmp_path / "robot.urdf"
+    path.write_text(text, encoding="utf-8")
+    out = subprocess.run([str(CHECK_URDF_BIN), str(path)], capture_output=True, text=True, env=urdfdom_env(),
+                         check=True).stdout
+    assert out.splitlines() == _tree_from_xml(text)
+    designed_roots = {"arm.urdf.xacro": "world", "diffbot.urdf.xacro": "base_footprint",
+                      "skid_steer.urdf.xacro": "base_link"}
+    assert out.splitlines()[2].startswith(f"root Link: {designed_roots[name]} ")
+
+
+def test_mimic_joints_refer_to_existing_joints(seed) -> None:
+    _, text = seed
+    robot = ET.fromstring(text)
+    joint_names = {j.get("name") for j in robot.findall("joint")}
+    mimics = list(robot.iter("mimic"))
+    for mimic in mimics:
+        assert mimic.get("joint") in joint_names
+    assert len(mimics) == (1 if robot.get("name") == "arm" or "gripper_left_finger_joint" in joint_names else 0)
