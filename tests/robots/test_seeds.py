@@ -149,3 +149,13 @@ def test_mimic_joints_refer_to_existing_joints(seed) -> None:
     for mimic in mimics:
         assert mimic.get("joint") in joint_names
     assert len(mimics) == (1 if robot.get("name") == "arm" or "gripper_left_finger_joint" in joint_names else 0)
+
+
+def test_xacro_cli_expands_each_seed_to_the_same_text(seed, tmp_path: Path) -> None:
+    """The upstream ``xacro`` CLI (run from elsewhere, so relative includes must resolve against the file) agrees."""
+    name, text = seed
+    source = robotmodel.robots.path(name)
+    result = subprocess.run([sys.executable, "-c", "import sys, xacro; sys.argv[0] = 'xacro'; xacro.main()",
+                             str(source)], capture_output=True, text=True, cwd=tmp_path, check=False)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.strip() == text.strip()
