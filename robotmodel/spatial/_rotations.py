@@ -11,6 +11,8 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
+from robotmodel.spatial._poses import poses_compose, poses_interpolate
+
 __all__ = [
     "FloatArray",
     "matrix_to_quat",
@@ -123,32 +125,22 @@ def rpy_to_quat(rpy: npt.ArrayLike) -> FloatArray:
     ], axis=-1)
 
 
+def _rotation_only(quat: npt.ArrayLike) -> FloatArray:
+    q = np.asarray(quat, dtype=np.float64)
+    return np.concatenate([np.zeros((*q.shape[:-1], 3)), q], axis=-1)
+
+
 def quat_multiply(a: npt.ArrayLike, b: npt.ArrayLike) -> FloatArray:
-    """Hamilton product a ⊗ b of (x, y, z, w) quaternions (rotation b first, then a)."""
-    p = np.asarray(a, dtype=np.float64)
-    q = np.asarray(b, dtype=np.float64)
-    px, py, pz, pw = p[..., 0], p[..., 1], p[..., 2], p[..., 3]
-    qx, qy, qz, qw = q[..., 0], q[..., 1], q[..., 2], q[..., 3]
-    return np.stack([
-        pw * qx + px * qw + py * qz - pz * qy,
-        pw * qy - px * qz + py * qw + pz * qx,
-        pw * qz + px * qy - py * qx + pz * qw,
-        pw * qw - px * qx - py * qy - pz * qz,
-    ], axis=-1)
+    """Hamilton product a ⊗ b of (x, y, z, w) quaternions (rotation b first, then a).
+
+    The rotation part of :func:`~robotmodel.spatial.poses_compose`, which it calls.
+    """
+    return np.ascontiguousarray(poses_compose(_rotation_only(a), _rotation_only(b))[..., 3:])
 
 
 def slerp(a: npt.ArrayLike, b: npt.ArrayLike, t: npt.ArrayLike) -> FloatArray:
-    """Spherical interpolation from unit quaternion ``a`` (t=0) to ``b`` (t=1), shortest path."""
-    p = np.asarray(a, dtype=np.float64)
-    q = np.asarray(b, dtype=np.float64)
-    frac = np.asarray(t, dtype=np.float64)[..., None]
-    dot = np.sum(p * q, axis=-1, keepdims=True)
-    q = np.where(dot < 0.0, -q, q)
-    dot = np.abs(dot)
-    theta = np.arccos(np.clip(dot, -1.0, 1.0))
-    sin_theta = np.sin(theta)
-    near = sin_theta < 1e-9
-    safe = np.where(near, 1.0, sin_theta)
-    wa = np.where(near, 1.0 - frac, np.sin((1.0 - frac) * theta) / safe)
-    wb = np.where(near, frac, np.sin(frac * theta) / safe)
-    return quat_normalize(wa * p + wb * q)
+    """tf2's SLERP from quaternion ``a`` (t=0) to ``b`` (t=1), shortest path, not renormalized.
+
+    The rotation part of :func:`~robotmodel.spatial.poses_interpolate`, which it calls.
+    """
+    return np.ascontiguousarray(poses_interpolate(_rotation_only(a), _rotation_only(b), t)[..., 3:])

@@ -7,16 +7,17 @@ names: T_a_c = T_a_b @ T_b_c.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 import numpy.typing as npt
 
+from robotmodel.spatial._pose import pose_compose, pose_inverse
 from robotmodel.spatial._rotations import (
     FloatArray,
     matrix_to_quat,
     matrix_to_rpy,
-    quat_multiply,
     quat_to_matrix,
     rpy_to_quat,
 )
@@ -62,15 +63,11 @@ class Transform:
 
     def inverse(self) -> Transform:
         """T_child_parent from T_parent_child."""
-        x, y, z, w = self.rotation
-        conj = (-x, -y, -z, w)
-        t = -(quat_to_matrix(conj) @ np.asarray(self.translation))
-        return Transform((float(t[0]), float(t[1]), float(t[2])), conj)
+        p = pose_inverse((*self.translation, *self.rotation))
+        return Transform((p[0], p[1], p[2]), (p[3], p[4], p[5], p[6]))
 
     def __matmul__(self, other: Transform) -> Transform:
-        """Compose: (T_a_b @ T_b_c) = T_a_c."""
-        t = quat_to_matrix(self.rotation) @ np.asarray(other.translation) + np.asarray(self.translation)
-        q = quat_multiply(self.rotation, other.rotation)
-        q = q / np.linalg.norm(q)
-        return Transform((float(t[0]), float(t[1]), float(t[2])),
-                         (float(q[0]), float(q[1]), float(q[2]), float(q[3])))
+        """Compose: (T_a_b @ T_b_c) = T_a_c (the rotation renormalized)."""
+        p = pose_compose((*self.translation, *self.rotation), (*other.translation, *other.rotation))
+        n = math.sqrt(p[3] * p[3] + p[4] * p[4] + p[5] * p[5] + p[6] * p[6])
+        return Transform((p[0], p[1], p[2]), (p[3] / n, p[4] / n, p[5] / n, p[6] / n))

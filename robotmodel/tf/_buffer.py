@@ -15,8 +15,8 @@ import numpy as np
 import numpy.typing as npt
 
 from robotmodel.errors import TimeoutException, TransformException
+from robotmodel.spatial import Pose7, pose_compose
 from robotmodel.tf._core import BufferCore
-from robotmodel.tf._math import Pose7, compose
 from robotmodel.tf._msgs import (
     Header,
     PointStamped,
@@ -133,17 +133,17 @@ class Buffer(BufferCore):
         new_header = Header(stamp=Time(nanoseconds=to_nanoseconds(header.stamp)), frame_id=target_frame)
         if isinstance(object_stamped, PointStamped):
             pt = object_stamped.point
-            x, y, z = compose(t_target_source, (pt.x, pt.y, pt.z, 0.0, 0.0, 0.0, 1.0))[:3]
+            x, y, z = pose_compose(t_target_source, (pt.x, pt.y, pt.z, 0.0, 0.0, 0.0, 1.0))[:3]
             out_point = PointStamped(header=new_header)
             out_point.point.x, out_point.point.y, out_point.point.z = x, y, z
             return out_point  # type: ignore[return-value]
         if isinstance(object_stamped, Vector3Stamped):
             v = object_stamped.vector
-            x, y, z = compose((0.0, 0.0, 0.0, *t_target_source[3:]), (v.x, v.y, v.z, 0.0, 0.0, 0.0, 1.0))[:3]
+            x, y, z = pose_compose((0.0, 0.0, 0.0, *t_target_source[3:]), (v.x, v.y, v.z, 0.0, 0.0, 0.0, 1.0))[:3]
             return Vector3Stamped(header=new_header, vector=Vector3(x, y, z))  # type: ignore[return-value]
         if isinstance(object_stamped, PoseStamped):
             pp, o = object_stamped.pose.position, object_stamped.pose.orientation
-            out = compose(t_target_source, (pp.x, pp.y, pp.z, o.x, o.y, o.z, o.w))
+            out = pose_compose(t_target_source, (pp.x, pp.y, pp.z, o.x, o.y, o.z, o.w))
             result = PoseStamped(header=new_header)
             pos, ori = result.pose.position, result.pose.orientation
             pos.x, pos.y, pos.z = out[0], out[1], out[2]

@@ -4,10 +4,9 @@ from __future__ import annotations
 
 from bisect import bisect_right
 from dataclasses import dataclass
-from math import acos, sin
 from typing import Any
 
-from robotmodel.tf._math import Pose7
+from robotmodel.spatial import Pose7, pose_interpolate
 
 __all__ = ["CacheMiss", "StaticCache", "TimeCache", "format_time"]
 
@@ -119,22 +118,7 @@ class TimeCache:
             return self.data[i], parent  # never interpolate across a parent change
         if t0 == t1:
             return self.data[i + 1], parent
-        # lerp_slerp inlined: this is the hot path of every interpolated lookup.
-        ax, ay, az, qx, qy, qz, qw = self.data[i]
-        bx, by, bz, px, py, pz, pw = self.data[i + 1]
-        r = (t - t0) / (t1 - t0)
-        u = 1.0 - r
-        dot = qx * px + qy * py + qz * pz + qw * pw
-        theta = acos(dot if 0.0 <= dot <= 1.0 else min(1.0, abs(dot)))
-        if theta == 0.0:
-            return (ax * u + bx * r, ay * u + by * r, az * u + bz * r, qx, qy, qz, qw), parent
-        s = sin(theta)
-        wa = sin(u * theta) / s
-        wb = sin(r * theta) / s
-        if dot < 0.0:
-            wb = -wb
-        return (ax * u + bx * r, ay * u + by * r, az * u + bz * r,
-                qx * wa + px * wb, qy * wa + py * wb, qz * wa + pz * wb, qw * wa + pw * wb), parent
+        return pose_interpolate(self.data[i], self.data[i + 1], (t - t0) / (t1 - t0)), parent
 
     def latest(self) -> tuple[int, int]:
         """(newest stamp, its parent id); (0, 0) when empty."""

@@ -21,8 +21,9 @@ from robotmodel.errors import (
     LookupException,
     TransformException,
 )
+from robotmodel.spatial import IDENTITY_POSE as IDENTITY
+from robotmodel.spatial import Pose7, pose_compose, pose_inverse, quat_canonical
 from robotmodel.tf._cache import CacheMiss, StaticCache, TimeCache, format_time
-from robotmodel.tf._math import IDENTITY, Pose7, canonical_quat, compose, inverse
 from robotmodel.tf._msgs import TransformStamped
 
 __all__ = ["MAX_GRAPH_DEPTH", "BufferCore"]
@@ -69,7 +70,7 @@ class BufferCore:
         elif not self._valid(x, y, z, rot, parent, child, authority):
             return False
         else:
-            qx, qy, qz, qw = canonical_quat(rx, ry, rz, rw)
+            qx, qy, qz, qw = quat_canonical((rx, ry, rz, rw))
             values = (x, y, z, qx, qy, qz, qw)
         stamp = transform.header.stamp
         stamp_ns = int(stamp.sec) * 1_000_000_000 + int(stamp.nanosec)
@@ -96,10 +97,7 @@ class BufferCore:
     def _valid(self, x: float, y: float, z: float, rot: Any, parent: str, child: str, authority: str) -> bool:
         """tf2's checks, each logged with its text; False when any fails."""
         ok = True
-        try:
-            qx, qy, qz, qw = canonical_quat(float(rot.x), float(rot.y), float(rot.z), float(rot.w))
-        except ValueError:
-            qx = qy = qz = qw = math.nan
+        qx, qy, qz, qw = quat_canonical((float(rot.x), float(rot.y), float(rot.z), float(rot.w)))
         if child == parent:
             _log.error('TF_SELF_TRANSFORM: Ignoring transform from authority "%s" with frame_id and  '
                        'child_frame_id "%s" because they are the same', authority, child)
@@ -164,7 +162,7 @@ class BufferCore:
         if time_ns == 0:
             time_ns = self._latest_common_time(target_id, source_id, target, source)
         pose = self._walk(time_ns, target_id, source_id, target, source)
-        qx, qy, qz, qw = canonical_quat(pose[3], pose[4], pose[5], pose[6])
+        qx, qy, qz, qw = quat_canonical(pose[3:])
         return (pose[0], pose[1], pose[2], qx, qy, qz, qw), time_ns
 
     def lookup_full_ns(self, target: str, target_ns: int, source: str, source_ns: int,
@@ -176,8 +174,8 @@ class BufferCore:
             self._validate(fixed, "lookupTransform argument fixed_frame")
             fixed_source, _ = self.lookup_ns(fixed, source, source_ns)
             target_fixed, stamp = self.lookup_ns(target, fixed, target_ns)
-            pose = compose(target_fixed, fixed_source)
-            qx, qy, qz, qw = canonical_quat(pose[3], pose[4], pose[5], pose[6])
+            pose = pose_compose(target_fixed, fixed_source)
+            qx, qy, qz, qw = quat_canonical(pose[3:])
             return (pose[0], pose[1], pose[2], qx, qy, qz, qw), stamp
 
     def _loop_error(self, target: str, source: str) -> LookupException:
@@ -203,7 +201,7 @@ class BufferCore:
             if frame == target_id:
                 break
             pose, parent = got
-            source_acc = pose if source_acc is None else compose(pose, source_acc)
+            source_acc = pose if source_acc is None else pose_compose(pose, source_acc)
             frame = parent
             depth += 1
             if depth > MAX_GRAPH_DEPTH:
@@ -224,8 +222,8 @@ class BufferCore:
                 raise self._extrapolation(got, time_ns, target, source)
             pose, parent = got
             if frame == source_id:
-                return inverse(target_acc or IDENTITY)
-            target_acc = pose if target_acc is None else compose(pose, target_acc)
+                return pose_inverse(target_acc or IDENTITY)
+            target_acc = pose if target_acc is None else pose_compose(pose, target_acc)
             frame = parent
             depth += 1
             if depth > MAX_GRAPH_DEPTH:
@@ -237,8 +235,8 @@ class BufferCore:
         if target_acc is None:
             return IDENTITY if frame == source_id else source_acc
         if frame == source_id:
-            return inverse(target_acc)
-        return compose(inverse(target_acc), source_acc)
+            return pose_inverse(target_acc)
+        return pose_compose(pose_inverse(target_acc), source_acc)
 
     def _extrapolation(self, miss: CacheMiss, time_ns: int, target: str, source: str) -> ExtrapolationException:
         return ExtrapolationException(

@@ -12,8 +12,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
+from robotmodel.spatial import IDENTITY_POSE, poses_compose, poses_interpolate, poses_inverse, quats_canonical
 from robotmodel.tf._cache import StaticCache, TimeCache
-from robotmodel.tf._math import IDENTITY
 
 if TYPE_CHECKING:
     from robotmodel.tf._core import BufferCore
@@ -27,37 +27,10 @@ class _Irregular(Exception):
     """The vectorized walk cannot represent this case; use scalar lookups."""
 
 
-def _compose(a: F, b: F) -> F:
-    ax, ay, az, qx, qy, qz, qw = a
-    bx, by, bz, rx, ry, rz, rw = b
-    cx, cy, cz = qy * bz - qz * by, qz * bx - qx * bz, qx * by - qy * bx
-    return np.array([
-        ax + bx + 2.0 * (qw * cx + qy * cz - qz * cy),
-        ay + by + 2.0 * (qw * cy + qz * cx - qx * cz),
-        az + bz + 2.0 * (qw * cz + qx * cy - qy * cx),
-        qw * rx + qx * rw + qy * rz - qz * ry,
-        qw * ry - qx * rz + qy * rw + qz * rx,
-        qw * rz + qx * ry - qy * rx + qz * rw,
-        qw * rw - qx * rx - qy * ry - qz * rz,
-    ])
-
-
-def _inverse(a: F) -> F:
-    inv = np.zeros_like(a)
-    inv[3:6] = -a[3:6]
-    inv[6] = a[6]
-    point = np.zeros_like(a)
-    point[:3] = a[:3]
-    point[6] = 1.0
-    inv[:3] = -_compose(inv, point)[:3]
-    return inv
-
-
 def _snapshot(cache: TimeCache) -> tuple[npt.NDArray[np.int64], F, npt.NDArray[np.int64]]:
     snap = cache.snap
     if snap is None or snap[0] != cache.version:
-        # Column-major (7, n): gathering one column at a time is much cheaper than rows.
-        data = np.ascontiguousarray(np.array(cache.data, dtype=np.float64).reshape(-1, 7).T)
+        data = np.array(cache.data, dtype=np.float64).reshape(-1, 7)
         snap = (cache.version, np.array(cache.stamps, dtype=np.int64), data, np.array(cache.parents, dtype=np.int64))
         cache.snap = snap
     return snap[1], snap[2], snap[3]
@@ -90,7 +63,7 @@ class _Index:
 def _sample(cache: TimeCache | StaticCache, index: _Index) -> tuple[F, int]:
     t = index.t
     if isinstance(cache, StaticCache):
-        return np.broadcast_to(np.asarray(cache.pose, dtype=np.float64)[:, None], (7, t.shape[0])), cache.parent
+        return np.broadcast_to(np.asarray(cache.pose, dtype=np.float64), (t.shape[0], 7)), cache.parent
     stamps, data, parents = _snapshot(cache)
     n = stamps.shape[0]
     if n < 2 or t.min() < stamps[0] or t.max() > stamps[-1]:
@@ -101,82 +74,18 @@ def _sample(cache: TimeCache | StaticCache, index: _Index) -> tuple[F, int]:
         raise _Irregular  # a parent switch inside the span: scalar walk picks per stamp
     # Equal stamps (a repeated sample) take the newer one, as tf2.
     equal_stamps = (stamps[j] == stamps[i]) & (i != j)
-    a = [data[k][i] for k in range(7)]
-    b = [data[k][j] for k in range(7)]
-    u = 1.0 - r
-    dot = a[3] * b[3] + a[4] * b[4] + a[5] * b[5] + a[6] * b[6]
-    theta = np.arccos(np.minimum(np.abs(dot), 1.0))
-    sin_t = np.sin(theta)
-    zero = theta == 0.0
-    safe = np.where(zero, 1.0, sin_t)
-    wa = np.where(zero, 1.0, np.sin(u * theta) / safe)
-    wb = np.where(zero, 0.0, np.sin(r * theta) / safe)
-    np.negative(wb, out=wb, where=dot < 0.0)
-    out = np.empty((7, t.shape[0]))
-    for k in range(3):
-        out[k] = a[k] * u + b[k] * r
-    for k in range(3, 7):
-        out[k] = a[k] * wa + b[k] * wb
+    a, b = data[i], data[j]
+    out = poses_interpolate(a, b, r)
     if equal_stamps.any():
-        for k in range(7):
-            out[k] = np.where(equal_stamps, b[k], out[k])
+        out = np.where(equal_stamps[:, None], b, out)
     return out, int(first)
-
-
-def _canonical(q: F) -> F:
-    """tf2's matrix round trip of each quaternion (normalize, tf2's sign choice)."""
-    n2 = np.einsum("ij,ij->i", q, q)
-    w = q[:, 3]
-    positive_trace = w * w > 0.25 * n2
-    if positive_trace.all():
-        # tf2's positive-trace branch returns q/|q| with w > 0.
-        scale: F = np.copysign(1.0 / np.sqrt(n2), w)
-        return q * scale[:, None]
-    result: F = q * np.copysign(1.0 / np.sqrt(n2), w)[:, None]
-    others = ~positive_trace
-    result[others] = _canonical_full(q[others])
-    return result
-
-
-def _canonical_full(q: F) -> F:
-    n2 = np.sum(q * q, axis=1)
-    s = 2.0 / n2
-    x, y, z, w = q[:, 0], q[:, 1], q[:, 2], q[:, 3]
-    m = np.empty((q.shape[0], 3, 3))
-    m[:, 0, 0] = 1 - s * (y * y + z * z)
-    m[:, 0, 1] = s * (x * y - z * w)
-    m[:, 0, 2] = s * (x * z + y * w)
-    m[:, 1, 0] = s * (x * y + z * w)
-    m[:, 1, 1] = 1 - s * (x * x + z * z)
-    m[:, 1, 2] = s * (y * z - x * w)
-    m[:, 2, 0] = s * (x * z - y * w)
-    m[:, 2, 1] = s * (y * z + x * w)
-    m[:, 2, 2] = 1 - s * (x * x + y * y)
-    d0, d1, d2 = m[:, 0, 0], m[:, 1, 1], m[:, 2, 2]
-    trace = d0 + d1 + d2
-    i = np.where(d0 < d1, np.where(d1 < d2, 2, 1), np.where(d0 < d2, 2, 0))
-    j, k = (i + 1) % 3, (i + 2) % 3
-    rows = np.arange(q.shape[0])
-    root = np.sqrt(np.maximum(m[rows, i, i] - m[rows, j, j] - m[rows, k, k] + 1.0, 1e-300))
-    half = 0.5 / root
-    out = np.empty_like(q)
-    out[rows, i] = root * 0.5
-    out[rows, 3] = (m[rows, k, j] - m[rows, j, k]) * half
-    out[rows, j] = (m[rows, j, i] + m[rows, i, j]) * half
-    out[rows, k] = (m[rows, k, i] + m[rows, i, k]) * half
-    pos_root = np.sqrt(np.maximum(trace + 1.0, 1e-300))
-    pos_half = 0.5 / pos_root
-    positive = np.stack([(m[:, 2, 1] - m[:, 1, 2]) * pos_half, (m[:, 0, 2] - m[:, 2, 0]) * pos_half,
-                         (m[:, 1, 0] - m[:, 0, 1]) * pos_half, pos_root * 0.5], axis=1)
-    result: F = np.where((trace > 0.0)[:, None], positive, out)
-    return result
 
 
 def _walk(core: BufferCore, t: npt.NDArray[np.int64], target_id: int, source_id: int) -> F:
     caches = core._caches
     n = t.shape[0]
     index = _Index(t)
-    source_acc = np.tile(np.asarray(IDENTITY)[:, None], (1, n))
+    source_acc = np.tile(np.asarray(IDENTITY_POSE), (n, 1))
     frame, top = source_id, 0
     chain = set()
     while frame:
@@ -190,11 +99,11 @@ def _walk(core: BufferCore, t: npt.NDArray[np.int64], target_id: int, source_id:
                 _sample(cache, index)  # tf2 samples the target's own link: a miss must surface
             break
         pose, parent = _sample(cache, index)
-        source_acc = _compose(pose, source_acc)
+        source_acc = poses_compose(pose, source_acc)
         frame = parent
     if frame == target_id:
         return source_acc
-    target_acc = np.tile(np.asarray(IDENTITY)[:, None], (1, n))
+    target_acc = np.tile(np.asarray(IDENTITY_POSE), (n, 1))
     frame = target_id
     seen = set()
     while frame != top:
@@ -206,12 +115,12 @@ def _walk(core: BufferCore, t: npt.NDArray[np.int64], target_id: int, source_id:
             raise _Irregular  # not connected: the scalar walk builds the message
         pose, parent = _sample(cache, index)
         if frame == source_id:
-            return _inverse(target_acc)
-        target_acc = _compose(pose, target_acc)
+            return poses_inverse(target_acc)
+        target_acc = poses_compose(pose, target_acc)
         frame = parent
     if frame == source_id:
-        return _inverse(target_acc)
-    return _compose(_inverse(target_acc), source_acc)
+        return poses_inverse(target_acc)
+    return poses_compose(poses_inverse(target_acc), source_acc)
 
 
 def lookup_many(core: BufferCore, target: str, source: str,
@@ -229,7 +138,7 @@ def lookup_many(core: BufferCore, target: str, source: str,
         stamps = np.where(stamps == 0, latest, stamps)
     try:
         poses = _walk(core, stamps, target_id, source_id)
-        return np.ascontiguousarray(poses[:3].T), _canonical(np.ascontiguousarray(poses[3:].T))
+        return np.ascontiguousarray(poses[:, :3]), quats_canonical(poses[:, 3:])
     except _Irregular:
         out = np.array([core._lookup_ids(target_id, source_id, int(s), target, source)[0] for s in stamps])
         return out[:, :3].copy(), out[:, 3:].copy()

@@ -1,0 +1,123 @@
+"""The scalar pose kernels: tf2's arithmetic on plain 7-tuples (x, y, z, qx, qy, qz, qw).
+
+These are the only scalar copies of composition, inversion, interpolation and tf2's
+canonical quaternion in robotmodel; the TF buffer, kinematics and model call them, and
+the property tests check them. Plain floats and tuples, because a single lookup of a
+few links is faster without NumPy's per-call overhead.
+"""
+
+from __future__ import annotations
+
+import math
+
+__all__ = ["IDENTITY_POSE", "Pose7", "Quat", "pose_compose", "pose_interpolate", "pose_inverse", "quat_canonical"]
+
+#: A rigid transform as (x, y, z, qx, qy, qz, qw): translation, then a quaternion in ROS order.
+Pose7 = tuple[float, float, float, float, float, float, float]
+#: A quaternion in ROS order (x, y, z, w).
+Quat = tuple[float, float, float, float]
+
+#: The identity transform.
+IDENTITY_POSE: Pose7 = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0)
+
+
+def pose_compose(a: Pose7, b: Pose7) -> Pose7:
+    """``a ∘ b``: apply ``b``, then ``a`` (T_x_z = T_x_y ∘ T_y_z), with tf2's Hamilton product.
+
+    The quaternion is not renormalized, as in tf2's accumulation along a chain.
+    """
+    ax, ay, az, qx, qy, qz, qw = a
+    bx, by, bz, rx, ry, rz, rw = b
+    # Rotate b's translation by a's quaternion: v + 2w(u×v) + 2u×(u×v).
+    cx = qy * bz - qz * by
+    cy = qz * bx - qx * bz
+    cz = qx * by - qy * bx
+    return (
+        ax + bx + 2.0 * (qw * cx + qy * cz - qz * cy),
+        ay + by + 2.0 * (qw * cy + qz * cx - qx * cz),
+        az + bz + 2.0 * (qw * cz + qx * cy - qy * cx),
+        qw * rx + qx * rw + qy * rz - qz * ry,
+        qw * ry - qx * rz + qy * rw + qz * rx,
+        qw * rz + qx * ry - qy * rx + qz * rw,
+        qw * rw - qx * rx - qy * ry - qz * rz,
+    )
+
+
+def pose_inverse(a: Pose7) -> Pose7:
+    """The inverse transform; the rotation is the conjugate, as tf2's inverse."""
+    x, y, z, qx, qy, qz, qw = a
+    # Rotate (x, y, z) by the conjugate (-u, w): v - 2w(u×v) + 2u×(u×v), then negate.
+    cx = qy * z - qz * y
+    cy = qz * x - qx * z
+    cz = qx * y - qy * x
+    return (
+        -(x + 2.0 * (-qw * cx + qy * cz - qz * cy)),
+        -(y + 2.0 * (-qw * cy + qz * cx - qx * cz)),
+        -(z + 2.0 * (-qw * cz + qx * cy - qy * cx)),
+        -qx, -qy, -qz, qw,
+    )
+
+
+def pose_interpolate(a: Pose7, b: Pose7, r: float) -> Pose7:
+    """tf2's interpolation from ``a`` (r = 0) to ``b`` (r = 1).
+
+    Translation: ``(1-r)·a + r·b``. Rotation: tf2's SLERP — ``θ = acos(|qa·qb|)``
+    (clamped), ``qa`` unchanged when θ is 0, the shortest arc (``qb`` negated when the dot
+    product is negative), no renormalization afterwards.
+    """
+    qx, qy, qz, qw = a[3], a[4], a[5], a[6]
+    px, py, pz, pw = b[3], b[4], b[5], b[6]
+    u = 1.0 - r
+    dot = qx * px + qy * py + qz * pz + qw * pw
+    theta = math.acos(dot if 0.0 <= dot <= 1.0 else min(1.0, abs(dot)))
+    if theta == 0.0:
+        return (a[0] * u + b[0] * r, a[1] * u + b[1] * r, a[2] * u + b[2] * r, qx, qy, qz, qw)
+    s = math.sin(theta)
+    wa = math.sin(u * theta) / s
+    wb = math.sin(r * theta) / s
+    if dot < 0.0:
+        wb = -wb
+    return (a[0] * u + b[0] * r, a[1] * u + b[1] * r, a[2] * u + b[2] * r,
+            qx * wa + px * wb, qy * wa + py * wb, qz * wa + pz * wb, qw * wa + pw * wb)
+
+
+def quat_canonical(q: Quat) -> Quat:
+    """The quaternion as tf2 stores and returns it: through its rotation matrix and back.
+
+    Normalizes and picks tf2's sign (``Matrix3x3::setRotation`` then ``getRotation``). A
+    zero, NaN or infinite quaternion gives NaN in every component, as tf2's round trip does.
+    """
+    x, y, z, w = q
+    n2 = x * x + y * y + z * z + w * w
+    if not n2 > 0.0 or math.isinf(n2):
+        return (math.nan, math.nan, math.nan, math.nan)
+    if w * w > 0.25 * n2:
+        # The matrix trace is 4w²/|q|² - 1 > 0: tf2's positive-trace branch returns ±q/|q| with w > 0.
+        inv = math.copysign(1.0 / math.sqrt(n2), w)
+        return (x * inv, y * inv, z * inv, w * inv)
+    s = 2.0 / n2
+    m00 = 1.0 - s * (y * y + z * z)
+    m01 = s * (x * y - z * w)
+    m02 = s * (x * z + y * w)
+    m10 = s * (x * y + z * w)
+    m11 = 1.0 - s * (x * x + z * z)
+    m12 = s * (y * z - x * w)
+    m20 = s * (x * z - y * w)
+    m21 = s * (y * z + x * w)
+    m22 = 1.0 - s * (x * x + y * y)
+    trace = m00 + m11 + m22
+    if trace > 0.0:
+        root = math.sqrt(trace + 1.0)
+        half = 0.5 / root
+        return ((m21 - m12) * half, (m02 - m20) * half, (m10 - m01) * half, root * 0.5)
+    m = ((m00, m01, m02), (m10, m11, m12), (m20, m21, m22))
+    i = (2 if m11 < m22 else 1) if m00 < m11 else (2 if m00 < m22 else 0)
+    j, k = (i + 1) % 3, (i + 2) % 3
+    root = math.sqrt(m[i][i] - m[j][j] - m[k][k] + 1.0)
+    out = [0.0, 0.0, 0.0, 0.0]
+    out[i] = root * 0.5
+    half = 0.5 / root
+    out[3] = (m[k][j] - m[j][k]) * half
+    out[j] = (m[j][i] + m[i][j]) * half
+    out[k] = (m[k][i] + m[i][k]) * half
+    return (out[0], out[1], out[2], out[3])
