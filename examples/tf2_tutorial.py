@@ -18,7 +18,7 @@ from robotmodel.tf import Buffer, Duration, Time, TransformStamped
 def pose_message(parent: str, child: str, x: float, y: float, theta: float, stamp: Time) -> TransformStamped:
     """What the tutorial's broadcaster builds from a turtle's pose."""
     t = TransformStamped()
-    t.header.stamp = stamp
+    t.header.stamp = stamp.to_msg()
     t.header.frame_id = parent
     t.child_frame_id = child
     t.transform.translation.x = x

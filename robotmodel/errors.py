@@ -9,8 +9,11 @@ caller (and the CLI) can catch one class and print one line. The tree::
     │   └── UntrustedInputError     --untrusted refused $(env), an outside include, ...
     ├── URDFError                   the URDF is not a valid robot description
     │   └── URDFParseError          malformed XML or a malformed element
+    ├── UnknownLinkError            a link name the robot does not have (every API)
     ├── KinematicsError             a kinematic model could not be built or evaluated
     │   └── JointValueError         unknown joint, wrong length, NaN/inf, out of limits
+    ├── MessageError                a message field its ROS type cannot carry, or bytes that
+    │                               do not decode as the type (also a ValueError)
     └── TransformException          tf2's root (see robotmodel.tf)
         ├── LookupException
         ├── ConnectivityException
@@ -31,12 +34,14 @@ __all__ = [
     "JointValueError",
     "KinematicsError",
     "LookupException",
+    "MessageError",
     "PackageNotFoundError",
     "RobotModelError",
     "TimeoutException",
     "TransformException",
     "URDFError",
     "URDFParseError",
+    "UnknownLinkError",
     "UntrustedInputError",
     "XacroError",
 ]
@@ -72,6 +77,15 @@ class URDFParseError(URDFError):
     """The URDF XML is malformed, or one of its elements is."""
 
 
+class UnknownLinkError(RobotModelError, LookupError):
+    """A link name that the robot does not have, from every API that takes a link name."""
+
+    def __init__(self, robot: str, link: str) -> None:
+        self.robot = robot
+        self.link = link
+        super().__init__(f"robot '{robot}' has no link '{link}'")
+
+
 class KinematicsError(RobotModelError):
     """A kinematic model could not be built or evaluated."""
 
@@ -82,6 +96,14 @@ class JointValueError(KinematicsError):
     def __init__(self, message: str, joint: str | None = None) -> None:
         self.joint = joint
         super().__init__(message)
+
+
+class MessageError(RobotModelError, ValueError):
+    """A message cannot be encoded (a field out of its ROS type's range) or decoded.
+
+    The text names the message type and the field path, e.g.
+    ``tf2_msgs/msg/TFMessage.transforms[0].header.stamp.sec``.
+    """
 
 
 class TransformException(RobotModelError):

@@ -16,7 +16,7 @@ def make(parent: str, child: str, xyz=(0.0, 0.0, 0.0), yaw: float = 0.0, sec: fl
     t = TransformStamped()
     t.header.frame_id = parent
     t.child_frame_id = child
-    t.header.stamp = Time(seconds=sec)
+    t.header.stamp = Time(seconds=sec).to_msg()
     t.transform.translation.x, t.transform.translation.y, t.transform.translation.z = xyz
     q = quat if quat is not None else (0.0, 0.0, math.sin(yaw / 2), math.cos(yaw / 2))
     r = t.transform.rotation

@@ -3,6 +3,11 @@
 Code written for tf2_ros carries over with only its imports changed::
 
     from robotmodel.tf import Buffer, TransformStamped, Time, Duration, LookupException
+
+``Time`` and ``Duration`` are :mod:`robotmodel.time`'s immutable values; the messages
+come from :mod:`robotmodel.msgs` (``TransformStamped().header.stamp`` is a mutable
+``builtin_interfaces/Time`` message). Lookups take a Time, a stamp message, or any
+object with ``.nanoseconds`` (rclpy's Time).
 """
 
 from __future__ import annotations
@@ -15,9 +20,7 @@ from robotmodel.errors import (
     TimeoutException,
     TransformException,
 )
-from robotmodel.tf._buffer import Buffer
-from robotmodel.tf._core import MAX_GRAPH_DEPTH, BufferCore
-from robotmodel.tf._msgs import (
+from robotmodel.msgs import (
     Header,
     Point,
     PointStamped,
@@ -30,8 +33,10 @@ from robotmodel.tf._msgs import (
     Vector3Stamped,
     make_transform,
 )
-from robotmodel.tf._time import Duration, Time
+from robotmodel.tf._buffer import Buffer
+from robotmodel.tf._core import MAX_GRAPH_DEPTH, BufferCore
 from robotmodel.tf._view import view_frames_gv, write_view_frames
+from robotmodel.time import Duration, Time
 
 __all__ = [
     "MAX_GRAPH_DEPTH",

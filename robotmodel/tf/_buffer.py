@@ -15,9 +15,7 @@ import numpy as np
 import numpy.typing as npt
 
 from robotmodel.errors import TimeoutException, TransformException
-from robotmodel.spatial import Pose7, pose_compose
-from robotmodel.tf._core import BufferCore
-from robotmodel.tf._msgs import (
+from robotmodel.msgs import (
     Header,
     PointStamped,
     PoseStamped,
@@ -26,9 +24,12 @@ from robotmodel.tf._msgs import (
     TransformStamped,
     Vector3,
     Vector3Stamped,
+    stamp,
 )
-from robotmodel.tf._time import Duration, Time, to_nanoseconds
+from robotmodel.spatial import Pose7, pose_compose
+from robotmodel.tf._core import BufferCore
 from robotmodel.tf._vector import lookup_many
+from robotmodel.time import Duration, Time, to_nanoseconds
 
 __all__ = ["Buffer"]
 
@@ -37,7 +38,7 @@ Stamped = TypeVar("Stamped", PointStamped, PoseStamped, Vector3Stamped)
 
 def _message(pose: Pose7, stamp_ns: int, target: str, source: str) -> TransformStamped:
     return TransformStamped(
-        header=Header(stamp=Time(nanoseconds=stamp_ns), frame_id=target),
+        header=Header(stamp=stamp(stamp_ns), frame_id=target),
         child_frame_id=source,
         transform=Transform(Vector3(pose[0], pose[1], pose[2]), Quaternion(pose[3], pose[4], pose[5], pose[6])),
     )
@@ -130,17 +131,17 @@ class Buffer(BufferCore):
         header = object_stamped.header
         msg = self.lookup_transform(target_frame, header.frame_id, header.stamp, timeout)
         t_target_source: Pose7 = _pose7(msg)
-        new_header = Header(stamp=Time(nanoseconds=to_nanoseconds(header.stamp)), frame_id=target_frame)
+        new_header = Header(stamp=stamp(to_nanoseconds(header.stamp)), frame_id=target_frame)
         if isinstance(object_stamped, PointStamped):
             pt = object_stamped.point
             x, y, z = pose_compose(t_target_source, (pt.x, pt.y, pt.z, 0.0, 0.0, 0.0, 1.0))[:3]
             out_point = PointStamped(header=new_header)
             out_point.point.x, out_point.point.y, out_point.point.z = x, y, z
-            return out_point  # type: ignore[return-value]
+            return out_point
         if isinstance(object_stamped, Vector3Stamped):
             v = object_stamped.vector
             x, y, z = pose_compose((0.0, 0.0, 0.0, *t_target_source[3:]), (v.x, v.y, v.z, 0.0, 0.0, 0.0, 1.0))[:3]
-            return Vector3Stamped(header=new_header, vector=Vector3(x, y, z))  # type: ignore[return-value]
+            return Vector3Stamped(header=new_header, vector=Vector3(x, y, z))
         if isinstance(object_stamped, PoseStamped):
             pp, o = object_stamped.pose.position, object_stamped.pose.orientation
             out = pose_compose(t_target_source, (pp.x, pp.y, pp.z, o.x, o.y, o.z, o.w))

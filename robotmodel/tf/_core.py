@@ -21,10 +21,11 @@ from robotmodel.errors import (
     LookupException,
     TransformException,
 )
+from robotmodel.msgs.geometry_msgs import TransformStamped
 from robotmodel.spatial import IDENTITY_POSE as IDENTITY
 from robotmodel.spatial import Pose7, pose_compose, pose_inverse, quat_canonical
 from robotmodel.tf._cache import CacheMiss, StaticCache, TimeCache, format_time
-from robotmodel.tf._msgs import TransformStamped
+from robotmodel.time import to_nanoseconds
 
 __all__ = ["MAX_GRAPH_DEPTH", "BufferCore"]
 
@@ -73,7 +74,7 @@ class BufferCore:
             qx, qy, qz, qw = quat_canonical((rx, ry, rz, rw))
             values = (x, y, z, qx, qy, qz, qw)
         stamp = transform.header.stamp
-        stamp_ns = int(stamp.sec) * 1_000_000_000 + int(stamp.nanosec)
+        stamp_ns = to_nanoseconds(stamp)  # a stamp message, a Time, or rclpy's Time
         with self._cond:
             child_id = self._ids.get(child) or self._intern(child)
             cache = self._caches[child_id]

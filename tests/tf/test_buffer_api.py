@@ -31,9 +31,9 @@ def test_messages_have_ros2_paths_and_defaults() -> None:
     assert (t.transform.rotation.x, t.transform.rotation.w) == (0.0, 1.0)
     t.header.stamp.sec = 3
     t.header.stamp.nanosec = 500
-    assert t.header.stamp.nanoseconds == 3 * SEC + 500
+    assert Time.from_msg(t.header.stamp).nanoseconds == 3 * SEC + 500
     assert Time(seconds=1.5).seconds_nanoseconds() == (1, 500_000_000)
-    assert Time(sec=2, nanosec=5).nanoseconds == 2 * SEC + 5
+    assert Time(seconds=2, nanoseconds=5).nanoseconds == 2 * SEC + 5
     assert Duration(seconds=0.25).nanoseconds == SEC // 4
     assert PoseStamped().pose.orientation.w == 1.0
 

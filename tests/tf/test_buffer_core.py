@@ -70,7 +70,7 @@ def test_unknown_frame_text(buf: Buffer) -> None:
 
 def test_identical_frames_shortcut_before_validation(buf: Buffer) -> None:
     out = buf.lookup_transform("nowhere", "nowhere", Time(seconds=3))
-    assert out.header.stamp == Time(seconds=3) and out.transform.rotation.w == 1.0
+    assert out.header.stamp == Time(seconds=3).to_msg() and out.transform.rotation.w == 1.0
 
 
 def test_chain_across_common_ancestor_matches_matrices(buf: Buffer) -> None:
@@ -84,7 +84,7 @@ def test_chain_across_common_ancestor_matches_matrices(buf: Buffer) -> None:
     got = buf.lookup_transform("e", "c", Time())
     np.testing.assert_allclose(msg_matrix(got), expected, atol=1e-12)
     assert got.header.frame_id == "e" and got.child_frame_id == "c"
-    assert got.header.stamp == Time()  # static chain at time 0: stamp 0, as tf2
+    assert got.header.stamp == Time().to_msg()  # static chain at time 0: stamp 0, as tf2
 
 
 def test_interpolation_lerp_and_slerp(buf: Buffer) -> None:
@@ -120,10 +120,10 @@ def test_time_zero_is_latest_common_time(buf: Buffer) -> None:
         buf.set_transform(make("odom", "base", (0, s, 0), sec=s), "me")
     buf.set_transform_static(make("base", "laser", (0, 0, 1)), "me")
     got = buf.lookup_transform("map", "laser", Time())
-    assert got.header.stamp == Time(seconds=2)  # newest common to both dynamic links
+    assert got.header.stamp == Time(seconds=2).to_msg()  # newest common to both dynamic links
     np.testing.assert_allclose(msg_matrix(got)[:3, 3], [2, 2, 1])
     assert buf.get_latest_common_time("map", "laser") == Time(seconds=2)
-    assert buf.lookup_transform("base", "laser", Time()).header.stamp == Time()
+    assert buf.lookup_transform("base", "laser", Time()).header.stamp == Time().to_msg()
 
 
 def test_static_valid_at_all_times_mixed_with_dynamic(buf: Buffer) -> None:
@@ -143,7 +143,7 @@ def test_fixed_frame_lookup(buf: Buffer) -> None:
     buf.set_transform_static(make("base", "laser", (0.5, 0, 0)), "me")
     got = buf.lookup_transform_full("base", Time(seconds=3), "laser", Time(seconds=1), "odom")
     np.testing.assert_allclose(msg_matrix(got)[:3, 3], [1.5 - 3, 0, 0], atol=1e-12)
-    assert got.header.stamp == Time(seconds=3)
+    assert got.header.stamp == Time(seconds=3).to_msg()
 
 
 def test_loop_is_a_lookup_exception(buf: Buffer) -> None:

@@ -1,0 +1,87 @@
+"""ROS 2 message classes, with their ROS type names, and CDR encoding through rosbags.
+
+Each ROS package is a module, mirroring ``<pkg>.msg``: code written for rclpy carries
+over by changing ``from geometry_msgs.msg import TransformStamped`` into
+``from robotmodel.msgs.geometry_msgs import TransformStamped``. Messages are mutable
+dataclasses with ROS 2's defaults; each class names its ROS type in ``__msgtype__``
+(``"geometry_msgs/msg/TransformStamped"``). The classes whose names are unique are
+also exported here; ``Time``, ``Duration`` (builtin_interfaces) and ``Clock``
+(rosgraph_msgs) only from their package modules, since :mod:`robotmodel.time` has
+values of those names.
+
+Field values are checked against their ROS types when a message is converted or
+encoded (:func:`to_rosbags`, :func:`serialize`): out of range, a
+:class:`~robotmodel.errors.MessageError` names the field.
+"""
+
+from __future__ import annotations
+
+from robotmodel.msgs import (
+    builtin_interfaces,
+    geometry_msgs,
+    nav_msgs,
+    rosgraph_msgs,
+    sensor_msgs,
+    std_msgs,
+    tf2_msgs,
+)
+from robotmodel.msgs._build import make_transform, stamp
+from robotmodel.msgs._cdr import deserialize, serialize, type_hash
+from robotmodel.msgs._convert import Message, from_rosbags, message_class, to_rosbags, typestore
+from robotmodel.msgs.geometry_msgs import (
+    Point,
+    PointStamped,
+    Pose,
+    PoseStamped,
+    PoseWithCovariance,
+    Quaternion,
+    Transform,
+    TransformStamped,
+    Twist,
+    TwistStamped,
+    TwistWithCovariance,
+    Vector3,
+    Vector3Stamped,
+)
+from robotmodel.msgs.nav_msgs import Odometry
+from robotmodel.msgs.sensor_msgs import JointState
+from robotmodel.msgs.std_msgs import Header, String
+from robotmodel.msgs.tf2_msgs import TFMessage
+
+__all__ = [
+    "Header",
+    "JointState",
+    "Message",
+    "Odometry",
+    "Point",
+    "PointStamped",
+    "Pose",
+    "PoseStamped",
+    "PoseWithCovariance",
+    "Quaternion",
+    "String",
+    "TFMessage",
+    "Transform",
+    "TransformStamped",
+    "Twist",
+    "TwistStamped",
+    "TwistWithCovariance",
+    "Vector3",
+    "Vector3Stamped",
+    "builtin_interfaces",
+    "deserialize",
+    "from_rosbags",
+    "geometry_msgs",
+    "make_transform",
+    "message_class",
+    "nav_msgs",
+    "rosgraph_msgs",
+    "sensor_msgs",
+    "serialize",
+    "stamp",
+    "std_msgs",
+    "tf2_msgs",
+    "to_rosbags",
+    "type_hash",
+    "typestore",
+]

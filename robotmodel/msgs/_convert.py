@@ -1,0 +1,270 @@
+"""Conversion between robotmodel's messages and rosbags' typestore classes.
+
+Converters are compiled once per (typestore, message type) from the typestore's field
+definitions, so the ROS type (int32, uint32, float64[36], ...) decides how each field is
+checked. A value the ROS type cannot carry raises :class:`MessageError` naming the field
+path, e.g. ``tf2_msgs/msg/TFMessage.transforms[0].header.stamp.sec``.
+"""
+
+from __future__ import annotations
+
+import math
+import numbers
+import operator
+from collections.abc import Callable
+from dataclasses import fields
+from functools import lru_cache
+from typing import TYPE_CHECKING, Any, ClassVar, Protocol
+
+import numpy as np
+
+from robotmodel.errors import MessageError
+from robotmodel.msgs import (
+    builtin_interfaces,
+    geometry_msgs,
+    nav_msgs,
+    rosgraph_msgs,
+    sensor_msgs,
+    std_msgs,
+    tf2_msgs,
+)
+
+if TYPE_CHECKING:
+    from rosbags.typesys.store import Typestore
+
+__all__ = ["Message", "from_rosbags", "message_class", "to_rosbags", "typestore"]
+
+
+class Message(Protocol):
+    """Any ROS message class here: it names its ROS type in ``__msgtype__``."""
+
+    __msgtype__: ClassVar[str]
+
+
+_CLASSES: dict[str, type[Any]] = {
+    cls.__msgtype__: cls
+    for module in (builtin_interfaces, std_msgs, geometry_msgs, sensor_msgs, nav_msgs, tf2_msgs, rosgraph_msgs)
+    for cls in (getattr(module, name) for name in module.__all__)
+}
+_FIELDS: dict[type[Any], tuple[str, ...]] = {cls: tuple(f.name for f in fields(cls)) for cls in _CLASSES.values()}
+
+_INT_RANGES = {
+    "bool": (0, 1), "byte": (0, 255), "char": (0, 255), "uint8": (0, 255), "int8": (-(2**7), 2**7 - 1),
+    "uint16": (0, 2**16 - 1), "int16": (-(2**15), 2**15 - 1), "uint32": (0, 2**32 - 1),
+    "int32": (-(2**31), 2**31 - 1), "uint64": (0, 2**64 - 1), "int64": (-(2**63), 2**63 - 1),
+}
+_FLOAT32_MAX = 3.4028234663852886e38
+_DTYPES = {"float32": np.float32, "float64": np.float64, "bool": np.bool_, "byte": np.uint8, "char": np.uint8,
+           "uint8": np.uint8, "int8": np.int8, "uint16": np.uint16, "int16": np.int16, "uint32": np.uint32,
+           "int32": np.int32, "uint64": np.uint64, "int64": np.int64}
+
+Converter = Callable[[Any], Any]
+
+
+class _Bad(Exception):
+    """A field value the ROS type cannot carry; the path is filled in on the way out."""
+
+    def __init__(self, reason: str) -> None:
+        super().__init__(reason)
+        self.reason = reason
+        self.path: list[str] = []
+
+
+@lru_cache(maxsize=1)
+def typestore() -> Typestore:
+    """The ROS 2 Jazzy typestore of rosbags (built once, on first use)."""
+    from rosbags.typesys import Stores, get_typestore
+
+    return get_typestore(Stores.ROS2_JAZZY)
+
+
+def message_class(msgtype: str) -> type[Any]:
+    """The robotmodel class of a ROS message type name such as ``"tf2_msgs/msg/TFMessage"``."""
+    try:
+        return _CLASSES[msgtype]
+    except KeyError:
+        raise MessageError(f"no robotmodel message class for '{msgtype}'") from None
+
+
+def _int_converter(typename: str) -> Converter:
+    lo, hi = _INT_RANGES[typename]
+
+    def convert(value: Any) -> int:
+        if type(value) is not int:
+            try:
+                value = operator.index(value)
+            except TypeError:
+                raise _Bad(f"{value!r} is not an integer ({typename})") from None
+        if not lo <= value <= hi:
+            raise _Bad(f"{value} is out of range for {typename} [{lo}, {hi}]")
+        return int(value)
+
+    return convert
+
+
+def _float_converter(typename: str) -> Converter:
+    def convert(value: Any) -> float:
+        if type(value) is not float:
+            if not isinstance(value, numbers.Real):
+                raise _Bad(f"{value!r} is not a number ({typename})")
+            value = float(value)
+        if typename == "float32" and math.isfinite(value) and abs(value) > _FLOAT32_MAX:
+            raise _Bad(f"{value} is out of range for float32")
+        return float(value)
+
+    return convert
+
+
+def _bool_converter(value: Any) -> bool:
+    if not isinstance(value, bool | np.bool_):
+        raise _Bad(f"{value!r} is not a bool")
+    return bool(value)
+
+
+def _string_converter(bound: int) -> Converter:
+    def convert(value: Any) -> str:
+        if type(value) is not str:
+            raise _Bad(f"{value!r} is not a str")
+        if bound and len(value.encode()) > bound:
+            raise _Bad(f"string of {len(value.encode())} bytes exceeds its bound of {bound}")
+        return value
+
+    return convert
+
+
+def _base_converter(typename: str, bound: int) -> Converter:
+    if typename == "string":
+        return _string_converter(bound)
+    if typename == "bool":
+        return _bool_converter
+    if typename in ("float32", "float64"):
+        return _float_converter(typename)
+    return _int_converter(typename)
+
+
+def _numeric_array_converter(typename: str, length: int, bounded: bool) -> Converter:
+    dtype = _DTYPES[typename]
+    element = _base_converter(typename, 0)
+
+    def convert(value: Any) -> Any:
+        if isinstance(value, np.ndarray) and value.ndim == 1 and value.dtype.kind in "fiub":
+            items: Any = value
+            checked = value.dtype.kind == "f" and dtype is np.float64
+        elif isinstance(value, str | bytes):
+            raise _Bad(f"{value!r} is not a sequence of {typename}")
+        else:
+            items = list(value)
+            checked = dtype is np.float64 and all(type(item) is float for item in items)
+        if (bounded and len(items) > length) or (not bounded and length and len(items) != length):
+            raise _Bad(f"{len(items)} elements where {typename}[{'<=' if bounded else ''}{length}] is expected")
+        if not checked:
+            for i, item in enumerate(items):
+                try:
+                    element(item)
+                except _Bad as exc:
+                    exc.path.append(f"[{i}]")
+                    raise
+        return np.asarray(items, dtype=dtype)
+
+    return convert
+
+
+def _list_converter(element: Converter, length: int, bounded: bool, what: str) -> Converter:
+    def convert(value: Any) -> list[Any]:
+        if isinstance(value, str | bytes):
+            raise _Bad(f"{value!r} is not a sequence of {what}")
+        out = []
+        for i, item in enumerate(value):
+            try:
+                out.append(element(item))
+            except _Bad as exc:
+                exc.path.append(f"[{i}]")
+                raise
+        if (bounded and len(out) > length) or (not bounded and length and len(out) != length):
+            raise _Bad(f"{len(out)} elements where {what}[{'<=' if bounded else ''}{length}] is expected")
+        return out
+
+    return convert
+
+
+def _field_converter(store: Typestore, desc: Any) -> Converter:
+    kind, arg = desc
+    kind = int(kind)
+    if kind == 1:  # BASE: (typename, string bound)
+        return _base_converter(arg[0], arg[1])
+    if kind == 2:  # NAME: a nested message
+        return _struct_converter(store, arg)
+    (sub_kind, sub_arg), length = arg
+    if kind == 4 and length == 0:  # an unbounded SEQUENCE
+        length, bounded = 0, False
+    else:
+        bounded = kind == 4  # a bounded SEQUENCE: length is an upper bound; an ARRAY (3): exact
+    if int(sub_kind) == 1 and sub_arg[0] != "string":
+        return _numeric_array_converter(sub_arg[0], length, bounded)
+    element = _field_converter(store, (sub_kind, sub_arg))
+    return _list_converter(element, length, bounded, sub_arg if int(sub_kind) == 2 else sub_arg[0])
+
+
+_STRUCTS: dict[tuple[int, str], tuple[Typestore, Converter]] = {}
+
+
+def _struct_converter(store: Typestore, msgtype: str) -> Converter:
+    key = (id(store), msgtype)
+    cached = _STRUCTS.get(key)
+    if cached is not None and cached[0] is store:
+        return cached[1]
+    plan: list[tuple[str, Converter]] = []
+    target = store.types[msgtype]
+
+    def convert(value: Any) -> Any:
+        args = []
+        for name, conv in plan:
+            try:
+                args.append(conv(getattr(value, name)))
+            except _Bad as exc:
+                exc.path.append(f".{name}")
+                raise
+            except AttributeError:
+                raise _Bad(f"a {type(value).__name__} is not a {msgtype} (no field '{name}')") from None
+        return target(*args)
+
+    _STRUCTS[key] = (store, convert)  # registered before filling: recursive types find it
+    plan.extend((name, _field_converter(store, desc)) for name, desc in store.fielddefs[msgtype][1])
+    return convert
+
+
+def to_rosbags(msg: Message, store: Typestore | None = None) -> Any:
+    """``msg`` as an instance of the typestore's class for its type (default: ROS 2 Jazzy).
+
+    Raises :class:`MessageError` naming the field when a value does not fit its ROS type.
+    """
+    store = store if store is not None else typestore()
+    msgtype = type(msg).__msgtype__
+    if msgtype not in store.types:
+        raise MessageError(f"'{msgtype}' is not a type of the typestore")
+    try:
+        return _struct_converter(store, msgtype)(msg)
+    except _Bad as exc:
+        raise MessageError(f"{msgtype}{''.join(reversed(exc.path))}: {exc.reason}") from None
+
+
+def _from(obj: Any) -> Any:
+    cls = _CLASSES.get(getattr(obj, "__msgtype__", ""))
+    if cls is None:
+        raise MessageError(f"no robotmodel message class for {type(obj).__name__!r}")
+    values = []
+    for name in _FIELDS[cls]:
+        value = getattr(obj, name)
+        if hasattr(type(value), "__msgtype__"):
+            value = _from(value)
+        elif isinstance(value, np.ndarray):
+            value = value.tolist()
+        elif isinstance(value, list):
+            value = [_from(v) if hasattr(type(v), "__msgtype__") else v for v in value]
+        values.append(value)
+    return cls(*values)
+
+
+def from_rosbags(obj: Any) -> Any:
+    """The robotmodel message equal to a rosbags message object (fields it lacks, like ROS 1's seq, drop)."""
+    return _from(obj)
