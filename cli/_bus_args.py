@@ -1,0 +1,46 @@
+"""Bus options the TF tools share: ``--connect ENDPOINT`` (repeatable), and clean stops on signals."""
+
+from __future__ import annotations
+
+import signal
+import threading
+from collections.abc import Sequence
+from types import FrameType
+
+__all__ = ["split_connect", "stop_on_signals"]
+
+
+def split_connect(words: Sequence[str]) -> tuple[list[str], list[str]]:
+    """Take ``--connect ENDPOINT`` / ``--connect=ENDPOINT`` out of raw words: (other words, endpoints).
+
+    The ROS-shaped commands parse their own words (ROS's exact texts), so the bus option
+    is removed before they see them. A trailing ``--connect`` without a value is left in
+    place for the command to reject.
+    """
+    rest: list[str] = []
+    endpoints: list[str] = []
+    i = 0
+    while i < len(words):
+        word = words[i]
+        if word.startswith("--connect="):
+            endpoints.append(word.split("=", 1)[1])
+        elif word == "--connect" and i + 1 < len(words):
+            endpoints.append(words[i + 1])
+            i += 1
+        else:
+            rest.append(word)
+        i += 1
+    return rest, endpoints
+
+
+def stop_on_signals() -> threading.Event:
+    """An event set by SIGINT or SIGTERM, which no longer raise: a ROS tool stops cleanly and exits 0."""
+    stop = threading.Event()
+
+    def handler(signum: int, frame: FrameType | None) -> None:
+        del signum, frame
+        stop.set()
+
+    signal.signal(signal.SIGINT, handler)
+    signal.signal(signal.SIGTERM, handler)
+    return stop

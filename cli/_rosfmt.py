@@ -1,0 +1,61 @@
+"""What ROS's tools print besides their data: rcutils log lines and C's number parsing.
+
+The TF tools mimic ROS 2 programs, so their diagnostics look like rcutils' default console
+output (``[SEVERITY] [sec.nanosec] [logger]: message``, all severities on stderr), and
+their numbers are read the way ``std::stod``/``std::stof`` read them (a numeric prefix is
+accepted; what follows is reported separately).
+"""
+
+from __future__ import annotations
+
+import re
+import sys
+import time
+from typing import TextIO
+
+__all__ = ["log_line", "ros_log", "strtod_prefix"]
+
+# strtod's grammar (decimal, hexadecimal, inf/infinity, nan with an optional tag), after
+# optional leading white space.
+_NUMBER = re.compile(
+    r"""\s*[+-]?(?:
+        0[xX](?:[0-9a-fA-F]+\.?[0-9a-fA-F]*|\.[0-9a-fA-F]+)(?:[pP][+-]?[0-9]+)?
+      | (?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?
+      | [iI][nN][fF](?:[iI][nN][iI][tT][yY])?
+      | [nN][aA][nN](?:\([0-9A-Za-z_]*\))?
+    )""",
+    re.VERBOSE,
+)
+
+
+def strtod_prefix(text: str) -> tuple[float, int] | None:
+    """The number at the start of ``text`` and how many characters it used, as C's strtod reads it.
+
+    None when no number starts the text (where ``std::stod`` throws ``invalid_argument``).
+    """
+    found = _NUMBER.match(text)
+    if found is None:
+        return None
+    literal = found.group(0).strip()
+    body = literal.lstrip("+-")
+    negative = literal.startswith("-")
+    if body[:2].lower() == "0x":
+        hex_body = body if "p" in body.lower() else body + "p0"
+        value = float.fromhex(hex_body)
+    elif body[:3].lower() == "nan":
+        value = float("nan")
+    else:
+        value = float(body)
+    return (-value if negative else value), found.end()
+
+
+def log_line(severity: str, logger: str, message: str, now_ns: int | None = None) -> str:
+    """One rcutils console line: ``[INFO] [1716697697.040514000] [tf2_echo]: message``."""
+    ns = time.time_ns() if now_ns is None else now_ns
+    return f"[{severity}] [{ns // 1_000_000_000}.{ns % 1_000_000_000:09d}] [{logger}]: {message}"
+
+
+def ros_log(severity: str, logger: str, message: str, stream: TextIO | None = None) -> None:
+    """Write :func:`log_line` to stderr (where rcutils sends every severity) and flush."""
+    out = sys.stderr if stream is None else stream
+    print(log_line(severity, logger, message), file=out, flush=True)
