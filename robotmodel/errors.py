@@ -12,6 +12,8 @@ caller (and the CLI) can catch one class and print one line. The tree::
     ├── UnknownLinkError            a link name the robot does not have (every API)
     ├── KinematicsError             a kinematic model could not be built or evaluated
     │   └── JointValueError         unknown joint, wrong length, NaN/inf, out of limits
+    ├── BusError                    the bus: a bad topic/node name or endpoint, a session that
+    │                               would not open (see robotmodel.bus)
     ├── MessageError                a message field its ROS type cannot carry, or bytes that
     │                               do not decode as the type (also a ValueError)
     └── TransformException          tf2's root (see robotmodel.tf)
@@ -28,6 +30,7 @@ frame. The TF classes carry structured fields as well as tf2's text.
 from __future__ import annotations
 
 __all__ = [
+    "BusError",
     "ConnectivityException",
     "ExtrapolationException",
     "InvalidArgumentException",
@@ -96,6 +99,14 @@ class JointValueError(KinematicsError):
     def __init__(self, message: str, joint: str | None = None) -> None:
         self.joint = joint
         super().__init__(message)
+
+
+class BusError(RobotModelError):
+    """The bus could not do what was asked.
+
+    A bad topic or node name, a bad QoS text, a zenoh session that would not open, or an
+    endpoint that is not a zenoh locator; the message names it.
+    """
 
 
 class MessageError(RobotModelError, ValueError):

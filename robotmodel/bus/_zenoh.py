@@ -1,0 +1,191 @@
+"""The zenoh backend: one zenoh session, with rmw_zenoh's mapping of QoS onto zenoh.
+
+- Reliable QoS -> reliable zenoh publisher; congestion control BLOCK when the QoS says so
+  (:attr:`QoS.blocks`), DROP otherwise.
+- Transient local (latched) -> zenoh-ext AdvancedPublisher with a cache of ``depth``
+  samples and publisher detection (plus a 0.5 s sporadic heartbeat when reliable), and
+  AdvancedSubscriber with history, late-publisher detection and subscriber detection
+  (plus heartbeat recovery when reliable), exactly as rmw_zenoh sets them.
+- Payloads carry no zenoh encoding, as rmw_zenoh's.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Sequence
+from typing import Any
+
+import zenoh
+import zenoh.ext as zx
+
+from robotmodel.bus._backend import Backend, Handle, RawPublisher, RawSample, SampleCallback, TokenCallback
+from robotmodel.bus._config import (
+    LOOPBACK_ANY_PORT,
+    rendezvous_endpoint,
+    session_config,
+    user_session_config,
+)
+from robotmodel.bus._errors import BusError
+from robotmodel.bus._qos import QoS, Reliability
+
+__all__ = ["ZenohBackend", "open_session"]
+
+# rmw_zenoh's SAMPLE_MISS_DETECTION_HEARTBEAT_PERIOD (500 ms).
+_HEARTBEAT_S = 0.5
+
+
+def open_session(connect: Sequence[str] = ()) -> zenoh.Session:
+    """Open a peer session: the user's config file, explicit endpoints, or the loopback rendezvous."""
+    user = user_session_config(connect)
+    try:
+        if user is not None:
+            return zenoh.open(user)
+        if connect:
+            return zenoh.open(session_config([LOOPBACK_ANY_PORT], connect))
+        rendezvous = rendezvous_endpoint()
+        try:
+            # First on the machine: hold the well-known port for those who come later.
+            return zenoh.open(session_config([rendezvous, LOOPBACK_ANY_PORT], []))
+        except zenoh.ZError:
+            # Taken (a router, or a peer that came first): meet there.
+            return zenoh.open(session_config([LOOPBACK_ANY_PORT], [rendezvous]))
+    except zenoh.ZError as exc:
+        raise BusError(f"cannot open a zenoh session: {exc}") from exc
+
+
+def _to_raw(sample: zenoh.Sample) -> RawSample:
+    att = sample.attachment
+    return RawSample(str(sample.key_expr), sample.payload.to_bytes(), None if att is None else att.to_bytes())
+
+
+class _Undeclare(Handle):
+    def __init__(self, backend: ZenohBackend, obj: Any) -> None:
+        self._backend = backend
+        self._obj: Any = obj
+
+    def close(self) -> None:
+        obj, self._obj = self._obj, None
+        if obj is not None:
+            self._backend._forget(self)
+            if not self._backend.closed:
+                obj.undeclare()
+
+
+class _Publisher(RawPublisher):
+    def __init__(self, backend: ZenohBackend, pub: Any) -> None:
+        self._backend = backend
+        self._pub: Any = pub
+        self._put = pub.put
+
+    def put(self, payload: bytes, attachment: bytes) -> None:
+        self._put(payload, attachment=attachment)
+
+    def close(self) -> None:
+        pub, self._pub = self._pub, None
+        if pub is not None:
+            self._backend._forget(self)
+            if not self._backend.closed:
+                pub.undeclare()
+
+
+class ZenohBackend(Backend):
+    """A zenoh session (see :mod:`robotmodel.bus._config` for how it finds the others)."""
+
+    def __init__(self, connect: Sequence[str] = (), session: zenoh.Session | None = None) -> None:
+        self._session = session if session is not None else open_session(connect)
+        self._zid = str(self._session.zid())
+        self._lock = threading.Lock()
+        self._handles: list[Handle] = []
+        self.closed = False
+
+    @property
+    def session(self) -> zenoh.Session:
+        """The underlying zenoh session."""
+        return self._session
+
+    @property
+    def zid(self) -> str:
+        """See :attr:`Backend.zid`."""
+        return self._zid
+
+    def _track(self, handle: Handle) -> Handle:
+        with self._lock:
+            self._handles.append(handle)
+        return handle
+
+    def _forget(self, handle: Handle) -> None:
+        with self._lock:
+            if handle in self._handles:
+                self._handles.remove(handle)
+
+    def declare_publisher(self, key: str, qos: QoS) -> RawPublisher:
+        """See :meth:`Backend.declare_publisher`."""
+        q = qos.resolved()
+        reliable = q.reliability == Reliability.RELIABLE
+        common: dict[str, Any] = {
+            "congestion_control": zenoh.CongestionControl.BLOCK if qos.blocks else zenoh.CongestionControl.DROP,
+            "reliability": zenoh.Reliability.RELIABLE if reliable else zenoh.Reliability.BEST_EFFORT,
+        }
+        pub: Any
+        if q.transient_local:
+            pub = zx.declare_advanced_publisher(
+                self._session, key, cache=zx.CacheConfig(q.depth), publisher_detection=True,
+                sample_miss_detection=zx.MissDetectionConfig(heartbeat=None, sporadic_heartbeat=_HEARTBEAT_S)
+                if reliable else None,
+                **common)
+        else:
+            pub = self._session.declare_publisher(key, **common)
+        handle = _Publisher(self, pub)
+        self._track(handle)
+        return handle
+
+    def declare_subscriber(self, key: str, qos: QoS, callback: SampleCallback) -> Handle:
+        """See :meth:`Backend.declare_subscriber`."""
+        q = qos.resolved()
+
+        def on_sample(sample: zenoh.Sample) -> None:
+            callback(_to_raw(sample))
+
+        if q.transient_local:
+            sub: Any = zx.declare_advanced_subscriber(
+                self._session, key, on_sample,
+                history=zx.HistoryConfig(detect_late_publishers=True, max_samples=q.depth),
+                recovery=zx.RecoveryConfig(periodic_queries=None, heartbeat=True)
+                if q.reliability == Reliability.RELIABLE else None,
+                subscriber_detection=True)
+        else:
+            sub = self._session.declare_subscriber(key, on_sample)
+        return self._track(_Undeclare(self, sub))
+
+    def declare_token(self, key: str) -> Handle:
+        """See :meth:`Backend.declare_token`."""
+        return self._track(_Undeclare(self, self._session.liveliness().declare_token(key)))
+
+    def watch_tokens(self, pattern: str, callback: TokenCallback) -> Handle:
+        """See :meth:`Backend.watch_tokens`."""
+
+        def on_token(sample: zenoh.Sample) -> None:
+            callback(str(sample.key_expr), sample.kind == zenoh.SampleKind.PUT)
+
+        sub = self._session.liveliness().declare_subscriber(pattern, on_token, history=True)
+        return self._track(_Undeclare(self, sub))
+
+    def get_tokens(self, pattern: str, timeout: float) -> list[str]:
+        """See :meth:`Backend.get_tokens`."""
+        tokens = []
+        for reply in self._session.liveliness().get(pattern, timeout=timeout):
+            if reply.ok is not None:
+                tokens.append(str(reply.ok.key_expr))
+        return tokens
+
+    def close(self) -> None:
+        """See :meth:`Backend.close`."""
+        with self._lock:
+            if self.closed:
+                return
+            handles = list(reversed(self._handles))
+        for handle in handles:
+            handle.close()
+        with self._lock:
+            self.closed = True
+        self._session.close()  # type: ignore[no-untyped-call]

@@ -1,0 +1,165 @@
+"""The node API on the in-process backend: delivery, latching, attachments, graph, bad payloads."""
+
+from __future__ import annotations
+
+import logging
+
+import pytest
+
+from robotmodel.bus import (
+    QOS_TF,
+    QOS_TF_STATIC,
+    QOS_TF_STATIC_LISTENER,
+    Attachment,
+    BusError,
+    Context,
+    Node,
+    RawMessage,
+    codec_for,
+    typestore,
+)
+from robotmodel.msgs import TFMessage, make_transform
+
+String = typestore().types["std_msgs/msg/String"]
+
+
+def test_publish_subscribe_robotmodel_messages() -> None:
+    got: list[TFMessage] = []
+    with Node("listener", backend="inprocess", domain_id=101) as node:
+        node.create_subscription(TFMessage, "/tf", got.append, QOS_TF)
+        pub = node.create_publisher(TFMessage, "/tf", QOS_TF)
+        msg = TFMessage([make_transform("world", "base", (1.0, 2.0, 3.0), stamp_ns=5_000_000_123)])
+        pub.publish(msg)
+    assert got == [msg]
+
+
+def test_domains_do_not_mix() -> None:
+    got: list[object] = []
+    with Node("a", backend="inprocess", domain_id=102) as a, Node("b", backend="inprocess", domain_id=103) as b:
+        a.create_subscription(String, "chatter", got.append)
+        b.create_publisher(String, "chatter").publish(String(data="x"))
+    assert got == []
+
+
+def test_latched_reaches_late_and_early_subscribers() -> None:
+    early: list[TFMessage] = []
+    late: list[TFMessage] = []
+    with Node("static", backend="inprocess", domain_id=104) as node:
+        node.create_subscription(TFMessage, "/tf_static", early.append, QOS_TF_STATIC_LISTENER)
+        pub = node.create_publisher(TFMessage, "/tf_static", QOS_TF_STATIC)
+        first = TFMessage([make_transform("a", "b")])
+        second = TFMessage([make_transform("a", "c")])
+        pub.publish(first)
+        pub.publish(second)
+        node.create_subscription(TFMessage, "/tf_static", late.append, QOS_TF_STATIC_LISTENER)
+    assert early == [first, second]
+    assert late == [second]  # the publisher's cache holds depth 1, as tf2_ros's static broadcaster
+
+
+def test_raw_subscription_sees_type_and_attachment() -> None:
+    got: list[RawMessage] = []
+    with Node("echo", "/robot1", backend="inprocess", domain_id=105) as node:
+        node.create_raw_subscription("chatter", got.append)
+        pub = node.create_publisher(String, "chatter")
+        pub.publish(String(data="one"))
+        pub.publish(String(data="two"))
+    assert [m.topic for m in got] == ["/robot1/chatter"] * 2
+    assert {m.typename for m in got} == {"std_msgs/msg/String"}
+    assert [m.attachment.sequence_number for m in got] == [1, 2]
+    assert all(m.attachment.gid == pub.gid for m in got)
+    assert codec_for(String).decode(got[1].payload).data == "two"
+
+
+def test_bad_payload_is_dropped_with_one_warning(caplog: pytest.LogCaptureFixture) -> None:
+    got: list[TFMessage] = []
+    with Node("victim", backend="inprocess", domain_id=106) as node:
+        node.create_subscription(TFMessage, "/tf", got.append, QOS_TF)
+        pub = node.create_publisher(TFMessage, "/tf", QOS_TF)
+        with caplog.at_level(logging.WARNING, logger="robotmodel.bus"):
+            for _ in range(3):
+                pub.publish_raw(b"\x00\x01\x00\x00garbage")
+        pub.publish(TFMessage([make_transform("a", "b")]))
+    assert len(got) == 1
+    warnings = [r.getMessage() for r in caplog.records if r.name == "robotmodel.bus"]
+    assert len(warnings) == 1, warnings
+    assert "'/tf'" in warnings[0] and "tf2_msgs/msg/TFMessage" in warnings[0]
+
+
+def test_failing_callback_does_not_stop_delivery(caplog: pytest.LogCaptureFixture) -> None:
+    seen: list[str] = []
+
+    def callback(msg: object) -> None:
+        seen.append(msg.data)  # type: ignore[attr-defined]
+        raise RuntimeError("user bug")
+
+    with Node("n", backend="inprocess", domain_id=107) as node, caplog.at_level(logging.ERROR):
+        node.create_subscription(String, "x", callback)
+        pub = node.create_publisher(String, "x")
+        pub.publish(String(data="1"))
+        pub.publish(String(data="2"))
+    assert seen == ["1", "2"]
+
+
+def test_graph_lists_topics_nodes_and_counts() -> None:
+    with Context(backend="inprocess", domain_id=108) as ctx:
+        a = Node("talker", "/ns", context=ctx)
+        b = Node("listener", context=ctx)
+        pub = a.create_publisher(String, "chatter")
+        b.create_subscription(TFMessage, "/tf", lambda m: None, QOS_TF)
+        assert b.get_topic_names_and_types() == [
+            ("/ns/chatter", ["std_msgs/msg/String"]),
+            ("/tf", ["tf2_msgs/msg/TFMessage"]),
+        ]
+        assert b.get_node_names_and_namespaces() == [("listener", "/"), ("talker", "/ns")]
+        assert b.count_publishers("/ns/chatter") == 1
+        assert pub.get_subscription_count() == 0
+        b.create_subscription(String, "/ns/chatter", lambda m: None)
+        assert pub.wait_for_subscriptions(1, timeout=1.0)
+        pub.close()
+        assert b.count_publishers("/ns/chatter") == 0
+        a.close()
+        assert b.get_node_names_and_namespaces() == [("listener", "/")]
+
+
+def test_entity_ids_follow_one_counter_per_context() -> None:
+    with Context(backend="inprocess", domain_id=109) as ctx:
+        node = Node("n", context=ctx)
+        pub = node.create_publisher(String, "a")
+        sub = node.create_subscription(String, "b", lambda m: None)
+        assert (node.node_id, pub.entity.entity_id, sub.entity.entity_id) == (0, 1, 2)  # type: ignore[union-attr]
+        assert pub.entity.node_id == 0
+
+
+@pytest.mark.parametrize(("name", "ns", "expected"), [
+    ("tf", "/", "/tf"), ("tf", "/robot1", "/robot1/tf"), ("/tf", "/robot1", "/tf"),
+    ("~/state", "/robot1", "/robot1/n/state"), ("a/b", "", "/a/b"),
+])
+def test_topic_names_expand_as_rcl(name: str, ns: str, expected: str) -> None:
+    with Node("n", ns, backend="inprocess", domain_id=110) as node:
+        assert node.resolve_topic_name(name) == expected
+
+
+@pytest.mark.parametrize("bad", ["", "/", "a//b", "1abc", "a/", "a b", "/x/2y"])
+def test_bad_topic_names_raise(bad: str) -> None:
+    with Node("n", backend="inprocess", domain_id=111) as node, pytest.raises(BusError):
+        node.create_publisher(String, bad)
+
+
+def test_bad_node_names_and_domains_raise(monkeypatch: pytest.MonkeyPatch) -> None:
+    with pytest.raises(BusError):
+        Node("1node", backend="inprocess")
+    monkeypatch.setenv("ROS_DOMAIN_ID", "abc")
+    with pytest.raises(BusError, match="ROS_DOMAIN_ID"):
+        Node("n", backend="inprocess")
+    monkeypatch.setenv("ROS_DOMAIN_ID", "12")
+    with Node("n", backend="inprocess") as node:
+        assert node.context.domain_id == 12
+
+
+def test_attachment_round_trip_and_rejects() -> None:
+    att = Attachment(7, 1_700_000_000_123_456_789, bytes(range(16)))
+    assert Attachment.decode(att.encode()) == att
+    with pytest.raises(BusError):
+        Attachment.decode(att.encode()[:-1])
+    with pytest.raises(BusError):
+        Attachment(1, 2, b"short").encode()
