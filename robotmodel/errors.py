@@ -12,6 +12,7 @@ caller (and the CLI) can catch one class and print one line. The tree::
     ├── UnknownLinkError            a link name the robot does not have (every API)
     ├── KinematicsError             a kinematic model could not be built or evaluated
     │   └── JointValueError         unknown joint, wrong length, NaN/inf, out of limits
+    │       └── UnknownJointError   a joint name the robot does not have (every API)
     ├── BusError                    the bus: a bad topic/node name or endpoint, a session that
     │                               would not open (see robotmodel.bus)
     ├── MessageError                a message field its ROS type cannot carry, or bytes that
@@ -44,6 +45,7 @@ __all__ = [
     "TransformException",
     "URDFError",
     "URDFParseError",
+    "UnknownJointError",
     "UnknownLinkError",
     "UntrustedInputError",
     "XacroError",
@@ -115,6 +117,10 @@ class MessageError(RobotModelError, ValueError):
     The text names the message type and the field path, e.g.
     ``tf2_msgs/msg/TFMessage.transforms[0].header.stamp.sec``.
     """
+
+
+class UnknownJointError(JointValueError, LookupError):
+    """A joint name that the robot does not have, from every API that takes a joint name."""
 
 
 class TransformException(RobotModelError):

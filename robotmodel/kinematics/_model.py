@@ -108,7 +108,7 @@ class KinematicModel:
 
     def __init__(self, description: RobotDescription) -> None:
         self.description = description
-        urdf = description.urdf or to_urdf(description)
+        urdf = to_urdf(description)
         try:
             self.pin_model: Any = pin.buildModelFromXML(urdf)
         except (ValueError, RuntimeError) as exc:

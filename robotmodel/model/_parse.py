@@ -14,7 +14,6 @@ import xml.etree.ElementTree as ET
 
 from robotmodel.errors import URDFError, URDFParseError
 from robotmodel.model._locate import locate
-from robotmodel.model._tree import validate_tree
 from robotmodel.model._types import (
     Box,
     Collision,
@@ -46,40 +45,52 @@ _TYPES = {t.value: t for t in JointType}
 # Python's float() also takes "1_000" and non-ASCII digits, which no C++ URDF parser does.
 _NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?|[+-]?(?:nan|inf|infinity)",
                      re.IGNORECASE | re.ASCII)
+# urdfdom reads numbers with a C++ stream: leading C whitespace is skipped, anything after
+# the number (trailing whitespace included) makes it reject the value.
+_C_SPACE = " \t\n\v\f\r"
 
 
 def _float(text: str) -> float:
-    if not _NUMBER.fullmatch(text.strip()):
+    number = text.lstrip(_C_SPACE)
+    if not _NUMBER.fullmatch(number):
         raise ValueError(text)
-    return float(text)
+    return float(number)
+
+
+def _shown(text: str) -> str:
+    """``text`` for a one-line message: control characters escaped, as in a Python literal."""
+    return "".join(c if c.isprintable() or c == " " else repr(c)[1:-1] for c in text)
 
 
 def _num(text: str, what: str) -> float:
     try:
         value = _float(text)
     except ValueError:
-        raise URDFParseError(f"{what}: unable to parse [{text}] as a number") from None
+        raise URDFParseError(f"{what}: unable to parse [{_shown(text)}] as a number") from None
     if not math.isfinite(value):
-        raise URDFParseError(f"{what}: value [{text}] is not a finite number")
+        raise URDFParseError(f"{what}: value [{_shown(text)}] is not a finite number")
     return value
 
 
 def _vec(text: str, n: int, what: str) -> tuple[float, ...]:
-    parts = text.split()
-    if len(parts) != n:
-        raise URDFParseError(
-            f"{what}: Parser found {len(parts)} elements but {n} expected while parsing vector [{text}]"
-        )
+    # As urdfdom: components are separated by spaces only (a tab or newline between two
+    # numbers makes one malformed component), and each is parsed before the count is checked.
+    parts = [part for part in text.split(" ") if part]
     values = []
     for part in parts:
         try:
             values.append(_float(part))
         except ValueError:
             raise URDFParseError(
-                f"{what}: Unable to parse component [{part}] to a double (while parsing a vector value)"
+                f"{what}: Unable to parse component [{_shown(part)}] to a double (while parsing a vector value)"
             ) from None
-        if not math.isfinite(values[-1]):
-            raise URDFParseError(f"{what}: value [{part}] is not a finite number")
+    if len(parts) != n:
+        raise URDFParseError(
+            f"{what}: Parser found {len(parts)} elements but {n} expected while parsing vector [{_shown(text)}]"
+        )
+    for part, value in zip(parts, values, strict=True):
+        if not math.isfinite(value):
+            raise URDFParseError(f"{what}: value [{_shown(part)}] is not a finite number")
     return tuple(values)
 
 
@@ -246,6 +257,9 @@ def _joint(elem: ET.Element, version: tuple[int, int]) -> Joint:
     dyn = elem.find("dynamics")
     dynamics = None
     if dyn is not None:
+        if dyn.get("damping") is None and dyn.get("friction") is None:
+            raise URDFParseError(f"dynamics of joint [{name}]: joint dynamics element specified with no "
+                                 "damping and no friction")
         dynamics = Dynamics(_num(dyn.get("damping", "0"), f"dynamics of joint [{name}]"),
                             _num(dyn.get("friction", "0"), f"dynamics of joint [{name}]"))
     sc = elem.find("safety_controller")
@@ -284,22 +298,44 @@ def _version(robot: ET.Element) -> tuple[int, int]:
     return version
 
 
-def parse_urdf(text: str, *, source: str | None = None) -> RobotDescription:
-    """Parse URDF XML ``text`` into a validated :class:`RobotDescription`.
+def parse_urdf(text: str | bytes, *, source: str | None = None) -> RobotDescription:
+    """Parse URDF XML into a validated :class:`RobotDescription`.
 
-    ``source`` names the file in error messages, which also give the offending
-    element's line when it can be found. Raises :class:`URDFParseError` for malformed
-    XML or elements and :class:`URDFError` for an invalid robot.
+    ``text`` is a str, or the bytes of a file: then the XML declaration's encoding is
+    honoured (UTF-8 without one), as an XML parser must. ``source`` names the file in
+    error messages, which also give the offending element's line when it can be found.
+    Raises :class:`URDFParseError` for malformed XML or elements and :class:`URDFError`
+    for an invalid robot.
     """
-    return parse_located(text, source=source, original=text)
+    decoded = text if isinstance(text, str) else _decode(text)
+    return parse_located(text, source=source, original=decoded)
 
 
-def parse_located(text: str, *, source: str | None, original: str) -> RobotDescription:
+_DECLARED = re.compile(rb"""^<\?xml[^>]*?encoding\s*=\s*["']([A-Za-z0-9._-]+)["']""")
+
+
+def _decode(data: bytes) -> str:
+    """The text of XML bytes, for messages and provenance (the parser decodes on its own)."""
+    if data.startswith((b"\xff\xfe", b"\xfe\xff")):
+        encoding = "utf-16"
+    else:
+        declared = _DECLARED.match(data.lstrip(b"\xef\xbb\xbf"))
+        encoding = declared.group(1).decode("ascii") if declared else "utf-8"
+    try:
+        return data.decode(encoding, errors="replace")
+    except LookupError:
+        return data.decode("utf-8", errors="replace")
+
+
+def parse_located(text: str | bytes, *, source: str | None, original: str) -> RobotDescription:
     """:func:`parse_urdf`, with error lines looked up in ``original`` (the pre-xacro text)."""
     label = source or "<string>"
     try:
         robot = ET.fromstring(text)
     except ET.ParseError as exc:
+        raise URDFParseError(f"{label}: malformed XML: {exc}") from None
+    except (LookupError, ValueError) as exc:
+        # An unknown or wrong declared encoding.
         raise URDFParseError(f"{label}: malformed XML: {exc}") from None
     if robot.tag.startswith("{"):
         # tinyxml (urdfdom) ignores namespaces, so <robot xmlns="..."> is a robot.
@@ -308,7 +344,7 @@ def parse_located(text: str, *, source: str | None, original: str) -> RobotDescr
             if isinstance(elem.tag, str) and elem.tag.startswith(namespace):
                 elem.tag = elem.tag[len(namespace) :]
     try:
-        return _robot(robot, text, source)
+        return _robot(robot, text if isinstance(text, str) else original, source)
     except URDFError as exc:
         line = locate(original, str(exc))
         where = f"{label}:{line}" if line is not None else label
@@ -344,7 +380,7 @@ def _robot(robot: ET.Element, text: str, source: str | None) -> RobotDescription
         if joint.name in joints:
             raise URDFError(f"joint '{joint.name}' is not unique.")
         joints[joint.name] = joint
-    validate_tree(list(links), list(joints.values()))
+    # Construction checks the tree (and everything else again, cheaply).
     return RobotDescription(
         name, tuple(links.values()), tuple(joints.values()), tuple(materials.values()), text, source,
     )

@@ -63,21 +63,24 @@ def validate_tree(links: Sequence[str], joints: Sequence[Joint]) -> str:
         raise URDFError(
             f"links [{', '.join(cut_off)}] form a cycle that is not connected to root link [{root}]"
         )
-    for joint in joints:
-        mimic = joint.mimic
-        if mimic is None:
-            continue
-        if mimic.joint not in by_name:
-            # Loadable (urdfdom, RSP and real robots such as alex_psyonic_hands accept it);
-            # check_urdf reports it as an error, see robotmodel.check.
-            continue
-        chain = [joint.name]
-        current = by_name[mimic.joint]
-        while True:
-            if current.name in chain:
-                raise URDFError(f"mimic joints form a cycle: {' -> '.join([*chain, current.name])}")
-            chain.append(current.name)
-            if current.mimic is None or current.mimic.joint not in by_name:
-                break
-            current = by_name[current.mimic.joint]
+    _check_mimics(joints, by_name)
     return root
+
+
+def _check_mimics(joints: Sequence[Joint], by_name: dict[str, Joint]) -> None:
+    """Reject mimic cycles; each joint is walked once (chains end in joints known to be fine)."""
+    acyclic: set[str] = set()
+    for joint in joints:
+        path: list[str] = []
+        on_path: set[str] = set()
+        current: Joint | None = joint
+        while current is not None and current.name not in acyclic:
+            if current.name in on_path:
+                raise URDFError(f"mimic joints form a cycle: {' -> '.join([*path, current.name])}")
+            path.append(current.name)
+            on_path.add(current.name)
+            mimic = current.mimic
+            # A mimic of a missing joint is loadable (urdfdom, RSP and real robots such as
+            # alex_psyonic_hands accept it); check_urdf reports it, see robotmodel.check.
+            current = by_name.get(mimic.joint) if mimic is not None else None
+        acyclic.update(path)

@@ -12,6 +12,8 @@ from dataclasses import dataclass, field
 from enum import Enum
 from functools import cached_property
 
+from robotmodel.errors import UnknownJointError, UnknownLinkError, URDFError
+
 Vec3 = tuple[float, float, float]
 RGBA = tuple[float, float, float, float]
 
@@ -213,17 +215,28 @@ class Joint:
 class RobotDescription:
     """A whole robot: links, joints and named materials, in document order.
 
-    ``urdf`` holds the URDF XML text the description was parsed from (after xacro
-    expansion), so engines such as Pinocchio can be built from exactly that text.
-    ``source`` is the file it came from, when there was one.
+    The typed fields are the single source of truth: every engine is built from them
+    (Pinocchio through :func:`robotmodel.model.to_urdf`), so a description changed with
+    :func:`dataclasses.replace` is what every engine sees. Construction validates the
+    robot with the same checks and messages as :func:`robotmodel.model.parse_urdf`
+    (one tree, unique names, limits, finite numbers, no mimic cycles), raising
+    :class:`robotmodel.errors.URDFError`.
+
+    Provenance only, never read by any engine: ``source_text`` is the URDF XML the
+    description was parsed from (after xacro expansion), ``source`` the file it came from.
     """
 
     name: str
     links: tuple[Link, ...]
     joints: tuple[Joint, ...]
     materials: tuple[Material, ...] = ()
-    urdf: str = field(default="", repr=False, compare=False)
+    source_text: str = field(default="", repr=False, compare=False)
     source: str | None = field(default=None, compare=False)
+
+    def __post_init__(self) -> None:
+        from robotmodel.model._validate import validate_description
+
+        validate_description(self.name, self.links, self.joints, self.materials)
 
     @cached_property
     def _links(self) -> dict[str, Link]:
@@ -252,18 +265,18 @@ class RobotDescription:
         return roots[0]
 
     def link(self, name: str) -> Link:
-        """The link called ``name`` (KeyError naming it otherwise)."""
+        """The link called ``name`` (:class:`~robotmodel.errors.UnknownLinkError` otherwise)."""
         try:
             return self._links[name]
         except KeyError:
-            raise KeyError(f"robot '{self.name}' has no link '{name}'") from None
+            raise UnknownLinkError(self.name, name) from None
 
     def joint(self, name: str) -> Joint:
-        """The joint called ``name`` (KeyError naming it otherwise)."""
+        """The joint called ``name`` (:class:`~robotmodel.errors.UnknownJointError` otherwise)."""
         try:
             return self._joints[name]
         except KeyError:
-            raise KeyError(f"robot '{self.name}' has no joint '{name}'") from None
+            raise UnknownJointError(f"robot '{self.name}' has no joint '{name}'", name) from None
 
     def child_joints(self, link: str) -> tuple[Joint, ...]:
         """Joints whose parent is ``link``, in joint-name order (as urdfdom lists them)."""
@@ -285,5 +298,9 @@ class RobotDescription:
         while stack:
             depth, joint = stack.pop()
             order.append((depth, joint))
+            if len(order) > len(self.joints):
+                # Construction proved a tree; only a description mutated behind the frozen
+                # dataclass's back gets here, and it must not loop.
+                raise URDFError(f"robot '{self.name}': the joints do not form a tree")
             stack.extend((depth + 1, j) for j in reversed(self.child_joints(joint.child)))
         return order

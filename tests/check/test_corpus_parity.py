@@ -23,7 +23,7 @@ def test_graphviz_and_round_trip(entry, tmp_path: Path) -> None:  # type: ignore
     assert tree_report(desc).splitlines()[2] == entry.root_line
     assert (len(desc.links), len(desc.joints)) == (entry.links, entry.joints)
     expanded = tmp_path / "expanded.urdf"
-    expanded.write_text(desc.urdf, encoding="utf-8")
+    expanded.write_text(desc.source_text, encoding="utf-8")
     env = urdfdom_env()
     env["PATH"] = "/nonexistent"  # the .gv only; urdfdom would otherwise also run dot
     subprocess.run([str(URDF_TO_GRAPHVIZ_BIN), str(expanded), "ref"], capture_output=True, env=env,

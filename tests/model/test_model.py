@@ -12,7 +12,7 @@ import yourdfpy
 from conftest import BUNDLED, ERD_ROBOTS, erd_urdfs
 
 import robotmodel
-from robotmodel.errors import URDFError
+from robotmodel.errors import UnknownJointError, UnknownLinkError, URDFError
 from robotmodel.model import JointType, Pose, RobotDescription, load, parse_urdf, to_urdf
 
 ROBOTS = [p for p in erd_urdfs() if p.name != "ur3.urdf"]  # ur3.urdf is an empty, nameless robot
@@ -98,9 +98,9 @@ def test_tree_helpers_on_panda() -> None:
     ]
     walked = [j.name for _, j in desc.walk()]
     assert sorted(walked) == sorted(j.name for j in desc.joints)
-    with pytest.raises(KeyError, match="no link 'nope'"):
+    with pytest.raises(UnknownLinkError, match="no link 'nope'"):
         desc.link("nope")
-    with pytest.raises(KeyError, match="no joint 'nope'"):
+    with pytest.raises(UnknownJointError, match="no joint 'nope'"):
         desc.joint("nope")
 
 
