@@ -1,0 +1,34 @@
+"""robot_state_publisher and joint_state_publisher as library objects.
+
+- :class:`RobotStatePublisher`: on a bus node, publishes /robot_description and /tf_static
+  (latched) and /tf for each JointState, as ROS 2's robot_state_publisher.
+- :class:`JointStatePublisher`: publishes JointState at a rate for a robot from a file or
+  from /robot_description; :meth:`JointStatePublisher.set` moves joints.
+- :class:`RobotStateLogic`: robot_state_publisher's rules with no bus: a JointState in,
+  the /tf transforms out; the /tf_static set; the rate cap, ``frame_prefix`` and
+  ``ignore_timestamp``.
+- :class:`JointStateLogic`: joint_state_publisher's joints, defaults, ``zeros``, mimic
+  resolution and ``source_list`` merging, with no bus.
+"""
+
+from __future__ import annotations
+
+from robotmodel.publishers._errors import PublisherError
+from robotmodel.publishers._jsp import JointStatePublisher
+from robotmodel.publishers._jsp_joints import DependentJoint, FreeJoint, JointLayout, read_layout
+from robotmodel.publishers._jsp_state import JointStateLogic
+from robotmodel.publishers._rsp import RobotStatePublisher
+from robotmodel.publishers._rsp_state import RobotStateLogic, check_publish_frequency
+
+__all__ = [
+    "DependentJoint",
+    "FreeJoint",
+    "JointLayout",
+    "JointStateLogic",
+    "JointStatePublisher",
+    "PublisherError",
+    "RobotStateLogic",
+    "RobotStatePublisher",
+    "check_publish_frequency",
+    "read_layout",
+]

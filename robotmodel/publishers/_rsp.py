@@ -1,0 +1,135 @@
+"""robot_state_publisher on the bus: /robot_description and /tf_static latched, /tf per joint state."""
+
+from __future__ import annotations
+
+import logging
+import threading
+from types import TracebackType
+from typing import Any
+
+from robotmodel.model import RobotDescription
+from robotmodel.msgs import JointState, String, TransformStamped
+from robotmodel.publishers._rsp_state import RobotStateLogic
+from robotmodel.time import Clock, SystemClock
+
+__all__ = ["RobotStatePublisher"]
+
+
+class RobotStatePublisher:
+    """ROS 2's robot_state_publisher as an object: give it a robot and a bus node.
+
+    On start it publishes ``robot_description`` (std_msgs/String, transient local depth 1:
+    a late joiner gets it) and the fixed joints on ``/tf_static`` (latched); then each
+    JointState on ``joint_states`` (in the node's namespace, as RSP subscribes) gives the
+    moving joints on ``/tf``. See :class:`RobotStateLogic` for the rules.
+
+    ``bus`` is a :class:`robotmodel.bus.Node`, left open on :meth:`close`; without one the
+    publisher opens a node named ``robot_state_publisher`` (``node_options`` such as
+    ``domain_id``, ``connect`` or ``backend`` go to it) and closes it again. ``clock``
+    stamps /tf_static and is RSP's "now" (a :class:`robotmodel.time.SimClock` in tests).
+    Tests and the viewer may also call :meth:`joint_state` directly.
+    """
+
+    def __init__(
+        self,
+        description: RobotDescription | str,
+        *,
+        bus: Any | None = None,
+        publish_frequency: float = 20.0,
+        frame_prefix: str = "",
+        ignore_timestamp: bool = False,
+        clock: Clock | None = None,
+        logger: logging.Logger | None = None,
+        subscribe: bool = True,
+        **node_options: Any,
+    ) -> None:
+        self.logic = RobotStateLogic(description, publish_frequency=publish_frequency, frame_prefix=frame_prefix,
+                                     ignore_timestamp=ignore_timestamp, logger=logger)
+        self.clock: Clock = clock or SystemClock()
+        self._lock = threading.Lock()
+        self._closed = False
+        self._owned = bus is None
+        if bus is None:
+            from robotmodel.bus import Node
+
+            bus = Node("robot_state_publisher", **node_options)
+        self.node: Any = bus
+        try:
+            self._open(subscribe)
+        except BaseException:
+            self.close()
+            raise
+
+    def _open(self, subscribe: bool) -> None:
+        from robotmodel.bus import QOS_LATCHED, QoS, Reliability
+        from robotmodel.tf_ros import StaticTransformBroadcaster, TransformBroadcaster
+
+        node = self.node
+        self._description_pub = node.create_publisher(String, "robot_description", QOS_LATCHED)
+        self._tf = TransformBroadcaster(node)
+        self._tf_static = StaticTransformBroadcaster(node)
+        self._publish_setup()
+        if subscribe:
+            # rclcpp's SensorDataQoS: best effort, keep last 5, volatile.
+            sensor = QoS(5, reliability=Reliability.BEST_EFFORT)
+            self._sub = node.create_subscription(JointState, "joint_states", self.joint_state, sensor)
+
+    def _publish_setup(self) -> None:
+        self._description_pub.publish(String(data=self.logic.description_text))
+        self._tf_static.send_transform(self.logic.fixed_transforms(self.clock.now().nanoseconds))
+
+    # -- driving ----------------------------------------------------------------------------------
+    def joint_state(self, msg: JointState) -> list[TransformStamped] | None:
+        """Handle one JointState as robot_state_publisher does; returns what went on /tf (None: nothing)."""
+        with self._lock:
+            if self._closed:
+                return None
+            out = self.logic.joint_state(msg, self.clock.now().nanoseconds)
+            if out is not None:
+                self._tf.send_transform(out)
+        return out
+
+    def set_description(self, description: RobotDescription | str) -> None:
+        """Take a new robot and republish /robot_description and the fixed transforms, as RSP does.
+
+        Raises :class:`robotmodel.errors.URDFError` and keeps the current robot when invalid.
+        """
+        with self._lock:
+            self.logic.setup(description)
+            self._publish_setup()
+
+    @property
+    def description_text(self) -> str:
+        """The text published on /robot_description."""
+        return self.logic.description_text
+
+    @property
+    def frame_prefix(self) -> str:
+        """Prepended to every frame id (changing it affects /tf from the next message on)."""
+        return self.logic.frame_prefix
+
+    @frame_prefix.setter
+    def frame_prefix(self, prefix: str) -> None:
+        with self._lock:
+            self.logic.frame_prefix = prefix
+
+    # -- life cycle -------------------------------------------------------------------------------
+    def close(self) -> None:
+        """Withdraw the publishers and subscription (and the node, if this object opened it)."""
+        with self._lock:
+            if self._closed:
+                return
+            self._closed = True
+        for name in ("_sub", "_tf", "_tf_static", "_description_pub"):
+            handle = getattr(self, name, None)
+            if handle is not None:
+                handle.close()
+        if self._owned:
+            self.node.close()
+
+    def __enter__(self) -> RobotStatePublisher:
+        return self
+
+    def __exit__(self, exc_type: type[BaseException] | None, exc: BaseException | None,
+                 tb: TracebackType | None) -> None:
+        self.close()

@@ -1,0 +1,208 @@
+"""robot_state_publisher's logic without a bus: a JointState in, the TransformStamped list for /tf out.
+
+Follows ROS 2 Jazzy's robot_state_publisher (3.3.3):
+
+- Moving joints (revolute, continuous, prismatic) go to /tf, each as T_parent_child with
+  the joint state's stamp; fixed and planar joints go once to /tf_static (planar at its
+  origin, as kdl_parser makes it fixed); floating joints are not published.
+- Only joints named in the message are published, plus mimic joints whose master is
+  (an explicit mimic value in the message wins). Names the robot lacks are ignored.
+- ``publish_frequency`` caps the rate by stamps: a message is published only if its stamp
+  is at least ``int(1000 / publish_frequency)`` ms after the oldest last-publish stamp of
+  the joints it names (a joint never seen counts as 0, so a stamp of 0 never passes).
+  ``ignore_timestamp`` publishes every message. 0 Hz means no cap.
+- ``frame_prefix`` is prepended verbatim to every frame id, static ones included.
+
+Where robot_state_publisher logs each bad message, this says it once per kind and joint,
+and where it forwards a NaN/inf position into /tf (every tf2 listener then rejects that
+transform), it leaves that transform out, once saying so: listeners see the same thing.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from collections.abc import Sequence
+
+from robotmodel.kinematics import JointTransforms, KinematicModel, joint_transforms, static_transforms
+from robotmodel.model import JointType, RobotDescription, parse_urdf, to_urdf
+from robotmodel.msgs.builtin_interfaces import Time
+from robotmodel.msgs.geometry_msgs import Quaternion, Transform, TransformStamped, Vector3
+from robotmodel.msgs.sensor_msgs import JointState
+from robotmodel.msgs.std_msgs import Header
+from robotmodel.publishers._errors import PublisherError
+from robotmodel.publishers._once import WarnOnce
+
+__all__ = ["RobotStateLogic", "check_publish_frequency"]
+
+_LOG = logging.getLogger("robot_state_publisher")
+_NS = 1_000_000_000
+
+
+def check_publish_frequency(hz: float) -> float:
+    """``hz`` if robot_state_publisher accepts it (0 to 1000), else :class:`PublisherError` with its text."""
+    value = float(hz)
+    if not 0.0 <= value <= 1000.0:
+        raise PublisherError("publish_frequency must be between 0 and 1000")
+    return value
+
+
+def _interval_ns(hz: float) -> int:
+    # robot_state_publisher truncates the period to whole milliseconds; 1000/0 is no period at all.
+    return int(1000.0 / hz) * 1_000_000 if hz > 0 else 0
+
+
+class RobotStateLogic:
+    """The transforms robot_state_publisher would publish, computed on call.
+
+    ``description`` is a :class:`RobotDescription` or URDF text (what goes on
+    /robot_description: the text is kept byte for byte). Times are integer nanoseconds;
+    the caller passes "now" so that tests can drive the clock.
+    """
+
+    def __init__(
+        self,
+        description: RobotDescription | str,
+        *,
+        publish_frequency: float = 20.0,
+        frame_prefix: str = "",
+        ignore_timestamp: bool = False,
+        logger: logging.Logger | None = None,
+    ) -> None:
+        self.log = logger or _LOG
+        self._warn = WarnOnce(self.log)
+        self._publish_frequency = check_publish_frequency(publish_frequency)
+        self._interval = _interval_ns(self._publish_frequency)
+        self.ignore_timestamp = ignore_timestamp
+        self._prefix = frame_prefix
+        self._last_publish: dict[str, int] = {}
+        self._last_callback = 0
+        self.setup(description)
+
+    # -- parameters -------------------------------------------------------------------------------
+    @property
+    def publish_frequency(self) -> float:
+        """The /tf rate cap in Hz (0 to 1000; 0: none)."""
+        return self._publish_frequency
+
+    @publish_frequency.setter
+    def publish_frequency(self, hz: float) -> None:
+        self._publish_frequency = check_publish_frequency(hz)
+        self._interval = _interval_ns(self._publish_frequency)
+
+    @property
+    def frame_prefix(self) -> str:
+        """Prepended verbatim to every published frame id (read on each publish, as RSP does)."""
+        return self._prefix
+
+    @frame_prefix.setter
+    def frame_prefix(self, prefix: str) -> None:
+        self._prefix = prefix
+        self._frames = self._prefixed(self._moving)
+
+    # -- the robot --------------------------------------------------------------------------------
+    def setup(self, description: RobotDescription | str) -> None:
+        """Take a (new) robot; raises :class:`robotmodel.errors.URDFError` and keeps the old one if invalid."""
+        if isinstance(description, str):
+            text = description
+            desc = parse_urdf(text)
+        else:
+            desc = description
+            text = description.source_text or to_urdf(description)
+        model = KinematicModel(desc)
+        for joint in desc.joints:
+            if joint.type in (JointType.PLANAR, JointType.FLOATING):
+                # kdl_parser's words: it turns both into fixed joints (RSP then skips floating ones).
+                self.log.warning("Converting unknown joint type of joint '%s' into a fixed joint", joint.name)
+        self.description = desc
+        self.description_text = text
+        self.model = model
+        self._known = {j.name for j in desc.joints}
+        self._moving = joint_transforms(model, dict.fromkeys(model.variables, 0.0))
+        self._frames = self._prefixed(self._moving)
+        self._static = static_transforms(model)
+        self._warn.reset()
+        self.log.info("Robot initialized")
+
+    def _prefixed(self, transforms: JointTransforms) -> dict[str, tuple[str, str]]:
+        prefix = self._prefix
+        return {j: (prefix + p, prefix + c)
+                for j, p, c in zip(transforms.joints, transforms.parents, transforms.children, strict=True)}
+
+    # -- output -----------------------------------------------------------------------------------
+    def fixed_transforms(self, now_ns: int) -> list[TransformStamped]:
+        """The /tf_static transforms (fixed and planar joints), stamped ``now_ns`` as RSP stamps them."""
+        return self._stamped(self._static, now_ns, self._prefixed(self._static))
+
+    def joint_state(self, msg: JointState, now_ns: int) -> list[TransformStamped] | None:
+        """The /tf transforms for one joint state received at ``now_ns``; None if RSP would not publish."""
+        names, positions = msg.name, msg.position
+        if len(names) != len(positions):
+            self._bad_lengths(names, positions)
+            return None
+        if now_ns < self._last_callback:
+            self.log.warning("Moved backwards in time, re-publishing joint transforms!")
+            self._last_publish.clear()
+        self._last_callback = now_ns
+        stamp = msg.header.stamp
+        stamp_ns = stamp.sec * _NS + stamp.nanosec
+        if not self.ignore_timestamp:
+            last = self._last_publish
+            oldest = min((last.get(n, 0) for n in names), default=now_ns)
+            if stamp_ns < min(oldest, now_ns) + self._interval:
+                if stamp_ns == 0:
+                    self._warn.once("zero-stamp", "joint states stamped 0 are never published (robot_state_publisher "
+                                    "throttles by stamp); stamp them, or set ignore_timestamp")
+                return None
+        # The first value of a repeated name wins, as std::map::insert keeps it.
+        values = dict(zip(reversed(names), reversed(positions), strict=True))
+        unknown = [n for n in values if n not in self._known]
+        if unknown:
+            self._say_unknown(unknown)
+        if not all(map(math.isfinite, positions)):
+            values = self._finite(values)
+        out = self._stamped(joint_transforms(self.model, values), stamp_ns, self._frames)
+        for name in names:
+            self._last_publish[name] = stamp_ns
+        return out
+
+    def _finite(self, values: dict[str, float]) -> dict[str, float]:
+        # Left out before the maths, so that mimic joints of a NaN master are left out too.
+        kept = {}
+        for name, value in values.items():
+            if math.isfinite(value):
+                kept[name] = value
+            else:
+                self._warn.once(("nan", name), "joint '%s' has a non-finite position (%s); its transform, and "
+                                "those of joints mimicking it, are left out of /tf (tf2 listeners reject "
+                                "non-finite transforms)", name, value)
+        return kept
+
+    def _stamped(self, transforms: JointTransforms, stamp_ns: int,
+                 frames: dict[str, tuple[str, str]]) -> list[TransformStamped]:
+        sec, nanosec = divmod(stamp_ns, _NS)
+        return [
+            TransformStamped(Header(Time(sec, nanosec), frames[joint][0]), frames[joint][1],
+                             Transform(Vector3(*t), Quaternion(*r)))
+            for joint, t, r in zip(transforms.joints, transforms.translations.tolist(),
+                                   transforms.rotations.tolist(), strict=True)
+        ]
+
+    def _bad_lengths(self, names: Sequence[str], positions: Sequence[float]) -> None:
+        if not positions:
+            self._warn.once(("empty", names[0]),
+                            'Robot state publisher ignored a JointState message about joint(s) "%s"(,...) '
+                            "whose position member was empty.", names[0])
+        else:
+            self._warn.once("invalid", "Robot state publisher ignored an invalid JointState message "
+                            "(%d names, %d positions)", len(names), len(positions), level=logging.ERROR)
+
+    def _say_unknown(self, unknown: list[str]) -> None:
+        counts = self._warn.counts
+        new = [n for n in unknown if ("unknown", n) not in counts]
+        for name in unknown:
+            counts["unknown", name] = counts.get(("unknown", name), 0) + 1
+        if new:
+            self.log.warning("joint_states names joint(s) that robot '%s' lacks, ignored: %s",
+                             self.description.name, ", ".join(new))
+
