@@ -1,22 +1,127 @@
-"""Helpers shared by the subcommands: xacro-style arguments and atomic output files."""
+"""Helpers shared by the subcommands: the subcommand parser, xacro-style arguments, input, output.
+
+Kept free of heavy imports: every command module imports this at ``robotmodel --help`` time.
+"""
 
 from __future__ import annotations
 
 import argparse
 import os
+import sys
 import tempfile
 from collections.abc import Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING, Any, NoReturn
 
-from robotmodel.errors import RobotModelError
+if TYPE_CHECKING:
+    from robotmodel.model import RobotDescription
 
-__all__ = ["add_model_arguments", "split_mappings", "write_atomic"]
+__all__ = [
+    "CommandParser",
+    "add_mapping_arguments",
+    "add_model_arguments",
+    "load_description",
+    "read_stdin_document",
+    "split_mappings",
+    "take_mappings",
+    "write_atomic",
+]
+
+REMAP = ":="
+
+
+class CommandParser(argparse.ArgumentParser):
+    """The parser of one subcommand.
+
+    As the ``xacro`` command does, every word holding ``:=`` is taken out of the line
+    before parsing when the command takes xacro arguments (see
+    :func:`add_mapping_arguments`), so ``name:=value`` may stand anywhere; the mappings
+    land in ``args.mappings``. Errors, unknown options included, print this
+    subcommand's usage rather than the top level's.
+    """
+
+    takes_mappings = False
+
+    def parse_known_args(  # type: ignore[override]
+        self, args: Sequence[str] | None = None, namespace: argparse.Namespace | None = None
+    ) -> tuple[argparse.Namespace, list[str]]:
+        words = list(sys.argv[1:] if args is None else args)
+        mappings: dict[str, str] = {}
+        if self.takes_mappings:
+            try:
+                mappings, words = take_mappings(words)
+            except ValueError as exc:
+                self.error(str(exc))
+        parsed, extras = super().parse_known_args(words, namespace)
+        if extras:
+            self.error(f"unrecognized arguments: {' '.join(extras)}")
+        if self.takes_mappings:
+            parsed.mappings = mappings
+        return parsed, []
+
+    def format_usage(self) -> str:
+        """The usage line, with the ``name:=value`` words when the command takes them."""
+        return self._with_mappings(super().format_usage())
+
+    def format_help(self) -> str:
+        """The help text, with the ``name:=value`` words in its usage line."""
+        return self._with_mappings(super().format_help())
+
+    def _with_mappings(self, text: str) -> str:
+        if not self.takes_mappings:
+            return text
+        return text.replace(f"usage: {self.prog}", f"usage: {self.prog} [name:=value ...]", 1)
+
+    def error(self, message: str) -> NoReturn:
+        """Print the usage and ``robotmodel CMD: error: message``; exit 2 (as argparse and xacro)."""
+        self.print_usage(sys.stderr)
+        self.exit(2, f"{self.prog}: error: {message}\n")
+
+
+def take_mappings(words: Sequence[str]) -> tuple[dict[str, str], list[str]]:
+    """Split xacro's ``name:=value`` words from the others, as the xacro command does.
+
+    Any word containing ``:=`` is a mapping, wherever it stands. Surrounding blanks are
+    stripped; a word with an empty name or value is dropped, and so is a ``_name`` key (a
+    ROS parameter assignment). A word with two ``:=`` raises ValueError.
+    """
+    mappings: dict[str, str] = {}
+    rest: list[str] = []
+    for word in words:
+        if REMAP not in word:
+            rest.append(word)
+            continue
+        parts = [p.strip() for p in word.split(REMAP)]
+        if len(parts) != 2:
+            raise ValueError(f"invalid remapping argument '{word}'")
+        name, value = parts
+        if not name or not value or (len(name) > 1 and name[0] == "_" and name[1] != "_"):
+            continue
+        mappings[name] = value
+    return mappings, rest
+
+
+def split_mappings(words: Sequence[str]) -> dict[str, str]:
+    """Parse ``name:=value`` words (see :func:`take_mappings`); a word without ``:=`` raises ValueError."""
+    mappings, rest = take_mappings(words)
+    if rest:
+        raise ValueError(f"expected name:=value, got '{rest[0]}'")
+    return mappings
+
+
+def add_mapping_arguments(parser: argparse.ArgumentParser) -> None:
+    """Make ``parser`` (a :class:`CommandParser`) take xacro's ``name:=value`` words anywhere."""
+    if not isinstance(parser, CommandParser):
+        raise TypeError("xacro arguments need a CommandParser (robotmodel.cli.main builds them)")
+    parser.takes_mappings = True
+    parser.set_defaults(mappings={})
+    parser.epilog = "name:=value words (xacro arguments) may stand anywhere on the line."
 
 
 def add_model_arguments(parser: argparse.ArgumentParser) -> None:
-    """Add the FILE, ``name:=value`` and package-path arguments every model command takes."""
+    """Add the FILE, ``name:=value``, package-path and trust arguments every model command takes."""
+    add_mapping_arguments(parser)
     parser.add_argument("file", metavar="FILE", help="a .urdf or .xacro file ('-' reads stdin)")
-    parser.add_argument("mappings", nargs="*", metavar="name:=value", help="xacro arguments")
     parser.add_argument(
         "--package-path", action="append", default=[], metavar="DIR",
         help="search DIR first for ROS packages ($(find pkg), package://); repeatable",
@@ -27,17 +132,24 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
     )
 
 
-def split_mappings(words: Sequence[str]) -> dict[str, str]:
-    """Parse xacro's ``name:=value`` words; like xacro, ``_name`` keys are ROS parameters and dropped."""
-    mappings: dict[str, str] = {}
-    for word in words:
-        name, sep, value = word.partition(":=")
-        if not sep or not name:
-            raise RobotModelError(f"expected name:=value, got '{word}'")
-        if name.startswith("_") and not name.startswith("__"):
-            continue
-        mappings[name] = value
-    return mappings
+def read_stdin_document() -> str:
+    """Read a whole XML document from stdin; empty or non-XML input is a URDFParseError."""
+    from robotmodel.errors import URDFParseError
+
+    text = sys.stdin.read()
+    if not text.lstrip("\ufeff \t\r\n").startswith("<"):
+        raise URDFParseError("<stdin>: empty document or not XML")
+    return text
+
+
+def load_description(args: argparse.Namespace) -> tuple[RobotDescription, Path]:
+    """Load the command's FILE (or stdin for ``-``); returns it and the folder relative paths start from."""
+    from robotmodel.model import load
+
+    kwargs: dict[str, Any] = {"package_paths": args.package_path, "untrusted": args.untrusted}
+    if args.file == "-":
+        return load(read_stdin_document(), args.mappings, **kwargs), Path.cwd()
+    return load(args.file, args.mappings, **kwargs), Path(args.file).resolve().parent
 
 
 def write_atomic(path: str | os.PathLike[str], text: str) -> None:

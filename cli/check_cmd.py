@@ -5,14 +5,14 @@ from __future__ import annotations
 import argparse
 import json
 import sys
-from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from robotmodel.cli._common import add_model_arguments, split_mappings
+from robotmodel.cli._common import add_model_arguments, load_description
 
-from robotmodel.check import Finding, Severity, lint, tree_report
-from robotmodel.errors import RobotModelError, URDFParseError
-from robotmodel.model import RobotDescription, load
+from robotmodel.errors import RobotModelError
+
+if TYPE_CHECKING:
+    from robotmodel.check import Finding
 
 
 def register(sub: Any) -> None:
@@ -33,26 +33,16 @@ def register(sub: Any) -> None:
     parser.set_defaults(func=run)
 
 
-def _load(args: argparse.Namespace) -> tuple[RobotDescription, Path]:
-    mappings = split_mappings(args.mappings)
-    if args.file == "-":
-        text = sys.stdin.read()
-        if not text.lstrip("\ufeff \t\r\n").startswith("<"):
-            raise URDFParseError("<stdin>: empty document or not XML")
-        desc = load(text, mappings, package_paths=args.package_path, untrusted=args.untrusted)
-        return desc, Path.cwd()
-    desc = load(args.file, mappings, package_paths=args.package_path, untrusted=args.untrusted)
-    return desc, Path(args.file).resolve().parent
-
-
 def _finding_json(f: Finding) -> dict[str, str]:
     return {"code": f.code, "severity": f.severity.value, "element": f.element, "message": f.message}
 
 
 def run(args: argparse.Namespace) -> int:
     """Check the file; exit 0 when valid (and, with --strict, warning-free)."""
+    from robotmodel.check import Finding, Severity, lint, tree_report
+
     try:
-        desc, base_dir = _load(args)
+        desc, base_dir = load_description(args)
     except RobotModelError as exc:
         if args.format != "json":
             raise

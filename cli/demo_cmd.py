@@ -6,14 +6,6 @@ import argparse
 import math
 from typing import Any
 
-import numpy as np
-import robotmodel.robots
-
-from robotmodel.check import lint, tree_report
-from robotmodel.kinematics import KinematicModel, KinematicState, joint_transforms, static_transforms
-from robotmodel.model import load
-from robotmodel.tf import Buffer, Time, make_transform
-
 
 def register(sub: Any) -> None:
     """Add the ``demo`` subcommand."""
@@ -24,6 +16,15 @@ def register(sub: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run the tour."""
+    # Imported here so `robotmodel --help` does not load NumPy and Pinocchio.
+    import numpy as np
+    import robotmodel.robots
+
+    from robotmodel.check import lint, tree_report
+    from robotmodel.kinematics import KinematicModel, KinematicState, joint_transforms, static_transforms
+    from robotmodel.model import load
+    from robotmodel.tf import Buffer, Time, make_transform
+
     print(f"Bundled robots: {', '.join(robotmodel.robots.names())}\n")
 
     path = robotmodel.robots.path("diffbot.urdf.xacro")

@@ -7,11 +7,9 @@ import json
 import math
 from typing import Any
 
-from robotmodel.cli._common import add_model_arguments, split_mappings
+from robotmodel.cli._common import add_model_arguments, load_description
 
 from robotmodel.errors import RobotModelError
-from robotmodel.kinematics import KinematicModel, KinematicState
-from robotmodel.model import load
 
 
 def register(sub: Any) -> None:
@@ -45,8 +43,9 @@ def _joint_values(words: list[str]) -> dict[str, float]:
 
 def run(args: argparse.Namespace) -> int:
     """Compute and print the poses."""
-    desc = load(args.file, split_mappings(args.mappings), package_paths=args.package_path,
-                untrusted=args.untrusted)
+    from robotmodel.kinematics import KinematicModel, KinematicState
+
+    desc, _ = load_description(args)
     model = KinematicModel(desc)
     state = KinematicState(model).update(_joint_values(args.joint), clamp=args.clamp)
     links = [args.link] if args.link else list(model.link_names)

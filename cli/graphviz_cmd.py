@@ -10,11 +10,9 @@ import tempfile
 from pathlib import Path
 from typing import Any
 
-from robotmodel.cli._common import add_model_arguments, split_mappings, write_atomic
+from robotmodel.cli._common import add_model_arguments, load_description, write_atomic
 
-from robotmodel.check import to_graphviz
 from robotmodel.errors import RobotModelError
-from robotmodel.model import load
 
 
 def register(sub: Any) -> None:
@@ -27,24 +25,17 @@ def register(sub: Any) -> None:
         "reported as created when graphviz's dot actually made it.",
     )
     add_model_arguments(parser)
+    # urdfdom's form: `urdf_to_graphviz FILE [OUTPUT]`.
+    parser.add_argument("output", nargs="?", metavar="OUTPUT", help="output base name (default: the robot's name)")
     parser.set_defaults(func=run)
-    # urdfdom's form is `urdf_to_graphviz FILE [OUTPUT]`: OUTPUT arrives as the first
-    # word of the name:=value list (see run); say so in the usage line.
-    for action in parser._actions:
-        if action.dest == "mappings":
-            action.metavar = "[OUTPUT] name:=value"
-            action.help = "output base name (default: the robot's name), then xacro arguments"
 
 
 def run(args: argparse.Namespace) -> int:
     """Write the .gv, then the .pdf when graphviz's ``dot`` is installed."""
-    # urdfdom takes OUTPUT as the optional second positional word; keep that form.
-    words = list(args.mappings)
-    output = None
-    if words and ":=" not in words[0]:
-        output = words.pop(0)
-    desc = load(args.file, split_mappings(words), package_paths=args.package_path, untrusted=args.untrusted)
-    base = output or desc.name
+    from robotmodel.check import to_graphviz
+
+    desc, _ = load_description(args)
+    base = args.output or desc.name
     gv = Path(f"{base}.gv")
     write_atomic(gv, to_graphviz(desc))
     print(f"Created file {gv}")

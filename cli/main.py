@@ -15,6 +15,8 @@ import logging
 import sys
 from collections.abc import Sequence
 
+from robotmodel.cli._common import CommandParser
+
 from robotmodel.errors import RobotModelError
 
 # Order here is the order of `robotmodel --help`.
@@ -24,6 +26,9 @@ COMMAND_MODULES: tuple[str, ...] = (
     "robotmodel.cli.check_cmd",
     "robotmodel.cli.graphviz_cmd",
     "robotmodel.cli.fk_cmd",
+    "robotmodel.cli.static_tf_cmd",
+    "robotmodel.cli.tf2_echo_cmd",
+    "robotmodel.cli.view_frames_cmd",
 )
 
 
@@ -33,7 +38,8 @@ def build_parser() -> argparse.ArgumentParser:
         prog="robotmodel",
         description="ROS's robot-model and transform tools without ROS.",
     )
-    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+    # Each subcommand's parser is a CommandParser: name:=value words anywhere, its own usage on errors.
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=CommandParser)
     sub.required = True
     for name in COMMAND_MODULES:
         importlib.import_module(name).register(sub)

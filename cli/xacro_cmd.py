@@ -1,4 +1,9 @@
-"""``robotmodel xacro``: expand a xacro file like the ``xacro`` command, without ROS."""
+"""``robotmodel xacro``: expand a xacro file like the ``xacro`` command, without ROS.
+
+Takes every option of xacro 2.1.1's command line, with its meaning: ``-o FILE``,
+``--deps``, ``-i/--inorder`` (a no-op), ``--root-dir DIR``, ``-q``, ``-v`` (repeatable)
+and ``--verbosity N``; ``name:=value`` words may stand anywhere.
+"""
 
 from __future__ import annotations
 
@@ -6,9 +11,13 @@ import argparse
 import sys
 from typing import Any
 
-from robotmodel.cli._common import add_model_arguments, split_mappings, write_atomic
+from robotmodel.cli._common import add_model_arguments, read_stdin_document, write_atomic
 
-from robotmodel.xacro import expand
+VERBOSITY_HELP = (
+    "set verbosity level: 0 quiet, suppressing warnings; 1 default, warnings and error locations; "
+    "2 stack trace in xacro (here: the error stays one line); 3 log property definitions and uses "
+    "at top level; 4 at all levels"
+)
 
 
 def register(sub: Any) -> None:
@@ -19,17 +28,36 @@ def register(sub: Any) -> None:
     )
     add_model_arguments(parser)
     parser.add_argument(
-        "-o", dest="output", metavar="FILE", help="write to FILE (atomically) instead of stdout"
+        "-o", dest="output", metavar="FILE", help="write output to FILE (atomically) instead of stdout"
     )
-    parser.set_defaults(func=run)
+    parser.add_argument("--deps", action="store_true", dest="just_deps", help="print file dependencies")
+    parser.add_argument("--inorder", "-i", action="store_true", dest="in_order",
+                        help="processing in read order (default, can be omitted)")
+    parser.add_argument("--root-dir", metavar="DIR", help="set the root directory to resolve relative paths to")
+    parser.add_argument("-q", action="store_const", const=0, dest="verbosity",
+                        help="quiet operation, suppressing warnings")
+    parser.add_argument("-v", action="count", dest="verbosity", help="increase verbosity")
+    parser.add_argument("--verbosity", type=int, metavar="level", dest="verbosity", help=VERBOSITY_HELP)
+    parser.set_defaults(func=run, verbosity=1, parser=parser)
 
 
 def run(args: argparse.Namespace) -> int:
     """Expand and print or write the result."""
-    text = expand(
-        args.file, split_mappings(args.mappings),
-        package_paths=args.package_path, untrusted=args.untrusted,
-    )
+    from robotmodel.xacro import dependencies, expand, expand_string
+
+    if args.in_order:
+        # xacro's own notice, word for word.
+        print("xacro: in-order processing became default in ROS Melodic. You can drop the option.",
+              file=sys.stderr)
+    common = {"package_paths": args.package_path, "untrusted": args.untrusted, "verbosity": args.verbosity}
+    if args.file == "-":
+        if args.just_deps:
+            args.parser.error("--deps needs an input file, not stdin")
+        text = expand_string(read_stdin_document(), args.mappings, base_dir=args.root_dir, name="-", **common)
+    elif args.just_deps:
+        text = " ".join(dependencies(args.file, args.mappings, root_dir=args.root_dir, **common))
+    else:
+        text = expand(args.file, args.mappings, root_dir=args.root_dir, **common)
     if args.output:
         write_atomic(args.output, text)
     else:

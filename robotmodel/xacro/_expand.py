@@ -13,7 +13,7 @@ from pathlib import Path
 from robotmodel.errors import PackageNotFoundError, UntrustedInputError, XacroError
 from robotmodel.xacro._packages import PathLike
 
-__all__ = ["DEFAULT_MEMORY_BYTES", "DEFAULT_TIMEOUT_S", "expand", "expand_string"]
+__all__ = ["DEFAULT_MEMORY_BYTES", "DEFAULT_TIMEOUT_S", "dependencies", "expand", "expand_string"]
 
 _log = logging.getLogger("robotmodel.xacro")
 
@@ -31,23 +31,54 @@ def expand(
     untrusted: bool = False,
     timeout: float = DEFAULT_TIMEOUT_S,
     memory_bytes: int = DEFAULT_MEMORY_BYTES,
+    verbosity: int = 1,
+    root_dir: PathLike | None = None,
 ) -> str:
     """Expand the xacro (or URDF) file ``source`` into URDF XML text.
 
     The text is what the ``xacro`` command prints for the same file and ``name:=value``
     ``args``. ``$(find pkg)``, ``find()`` and ``package://`` includes resolve without ROS
     (see :func:`robotmodel.xacro.find_package`). ``untrusted`` refuses ``$(env)``,
-    ``$(optenv)`` and reads outside the input's package roots. Raises
+    ``$(optenv)`` and reads outside the input's package roots. ``verbosity`` and
+    ``root_dir`` mean what xacro's ``--verbosity`` and ``--root-dir`` mean; what xacro
+    prints on stderr is logged as warnings of the ``robotmodel.xacro`` logger. Raises
     :class:`XacroError` naming the file.
     """
-    path = Path(source)
+    return _run(_file_request(source, root_dir), str(source), args, package_paths, untrusted, timeout,
+                memory_bytes, verbosity)
+
+
+def dependencies(
+    source: PathLike,
+    args: Mapping[str, str] | None = None,
+    *,
+    package_paths: Sequence[PathLike] = (),
+    untrusted: bool = False,
+    timeout: float = DEFAULT_TIMEOUT_S,
+    memory_bytes: int = DEFAULT_MEMORY_BYTES,
+    verbosity: int = 1,
+    root_dir: PathLike | None = None,
+) -> list[str]:
+    """The files ``source`` includes or loads (xacro's ``--deps``), each once, in first-use order.
+
+    Paths are spelled as xacro records them: relative includes joined to the including
+    file's folder, ``$(find)`` ones absolute. The document is expanded to find them, so
+    its required arguments must be given.
+    """
+    request = _file_request(source, root_dir)
+    request["deps"] = True
+    deps = json.loads(_run(request, str(source), args, package_paths, untrusted, timeout, memory_bytes,
+                           verbosity))
+    return [str(d) for d in deps]
+
+
+def _file_request(source: PathLike, root_dir: PathLike | None) -> dict[str, object]:
+    path = Path(root_dir or ".") / source
     if not path.is_file():
         what = "is a directory" if path.is_dir() else "does not exist"
-        raise XacroError(f"{path}: input file {what}")
-    return _run(
-        {"path": os.fspath(source), "text": None, "base_dir": None},
-        str(path), args, package_paths, untrusted, timeout, memory_bytes,
-    )
+        raise XacroError(f"{source}: input file {what}")
+    return {"path": os.fspath(source), "text": None, "base_dir": None,
+            "root_dir": os.fspath(root_dir) if root_dir is not None else None}
 
 
 def expand_string(
@@ -59,12 +90,17 @@ def expand_string(
     untrusted: bool = False,
     timeout: float = DEFAULT_TIMEOUT_S,
     memory_bytes: int = DEFAULT_MEMORY_BYTES,
+    verbosity: int = 1,
+    name: str | None = None,
 ) -> str:
-    """Expand xacro XML given as text; relative includes resolve against ``base_dir`` (default: cwd)."""
+    """Expand xacro XML given as text; relative includes resolve against ``base_dir`` (default: cwd).
+
+    With ``name`` the output starts with xacro's banner naming it, as for a file of that name.
+    """
     base = os.fspath(base_dir) if base_dir is not None else os.getcwd()
     return _run(
-        {"path": None, "text": text, "base_dir": base},
-        "<string>", args, package_paths, untrusted, timeout, memory_bytes,
+        {"path": None, "text": text, "base_dir": base, "banner": name},
+        name or "<string>", args, package_paths, untrusted, timeout, memory_bytes, verbosity,
     )
 
 
@@ -76,8 +112,10 @@ def _run(
     untrusted: bool,
     timeout: float,
     memory_bytes: int,
+    verbosity: int,
 ) -> str:
     request.update(
+        verbosity=verbosity,
         args=dict(args or {}),
         package_paths=[os.fspath(p) for p in package_paths],
         untrusted=untrusted,
