@@ -1,0 +1,244 @@
+"""The loopback web server: the control page, meshcat's viewer script, and one websocket per page.
+
+Runs tornado on its own thread and event loop, bound to 127.0.0.1 only (meshcat's own
+server listens on every interface). The scene is kept here as meshcat commands, so a
+page that connects late (or reconnects) is sent the whole scene, then live updates.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import errno
+import importlib.util
+import json
+import logging
+import socket
+import threading
+from collections.abc import Callable, Iterable
+from pathlib import Path
+from typing import Any
+
+import tornado.httpserver
+import tornado.netutil
+import tornado.web
+import tornado.websocket
+from tornado.ioloop import IOLoop
+
+from robotmodel.viewer._errors import ViewerError
+
+__all__ = ["ASSETS", "SceneStore", "ViewerServer", "meshcat_dist"]
+
+log = logging.getLogger("robotmodel.viewer")
+ASSETS = Path(__file__).with_name("assets")
+HOST = "127.0.0.1"
+
+
+def meshcat_dist() -> Path:
+    """Meshcat's bundled three.js viewer (``main.min.js``), found without importing meshcat."""
+    spec = importlib.util.find_spec("meshcat")
+    if spec is None or not spec.submodule_search_locations:
+        raise ViewerError("the meshcat package is not installed")
+    return Path(next(iter(spec.submodule_search_locations))) / "viewer" / "dist"
+
+
+def _quiet(handler: tornado.web.RequestHandler) -> None:
+    """Request logging off: a viewer's terminal is for its own messages."""
+
+
+class SceneStore:
+    """The current scene as meshcat commands: latest object, transform and property per path."""
+
+    def __init__(self) -> None:
+        self.objects: dict[str, bytes] = {}
+        self.transforms: dict[str, bytes] = {}
+        self.properties: dict[tuple[str, str], bytes] = {}
+
+    def commands(self) -> list[bytes]:
+        """Every command needed to rebuild the scene, objects first."""
+        return [*self.objects.values(), *self.properties.values(), *self.transforms.values()]
+
+    def drop(self, prefix: str) -> None:
+        """Forget everything at or under ``prefix``."""
+        def keep(path: str) -> bool:
+            return path != prefix and not path.startswith(prefix + "/")
+        self.objects = {k: v for k, v in self.objects.items() if keep(k)}
+        self.transforms = {k: v for k, v in self.transforms.items() if keep(k)}
+        self.properties = {k: v for k, v in self.properties.items() if keep(k[0])}
+
+
+class _Socket(tornado.websocket.WebSocketHandler):
+    def initialize(self, server: ViewerServer) -> None:
+        self.server = server
+
+    def check_origin(self, origin: str) -> bool:
+        # Only pages served by this server (any loopback spelling) may drive it.
+        host = origin.split("://", 1)[-1].split("/", 1)[0].rsplit(":", 1)[0]
+        return host in ("127.0.0.1", "localhost", "[::1]")
+
+    def open(self, *args: str, **kwargs: str) -> None:
+        self.set_nodelay(True)
+        self.server._clients.add(self)
+        self.server._greet(self)
+
+    def on_message(self, message: str | bytes) -> None:
+        try:
+            data = json.loads(message)
+        except ValueError:
+            return
+        if isinstance(data, dict):
+            self.server._on_message(data)
+
+    def on_close(self) -> None:
+        self.server._clients.discard(self)
+
+
+class _Page(tornado.web.RequestHandler):
+    def initialize(self, server: ViewerServer) -> None:
+        self.server = server
+
+    def get(self) -> None:
+        self.set_header("Cache-Control", "no-store")
+        self.set_header("Content-Type", "text/html; charset=utf-8")
+        self.write(self.server.page_html())
+
+
+class ViewerServer:
+    """Serves the page on ``http://127.0.0.1:<port>/`` from a background thread.
+
+    ``config`` returns the panel's JSON config for each new page; ``on_message`` gets
+    every JSON message a page sends (on the server's thread).
+    """
+
+    def __init__(self, store: SceneStore, *, title: str, config: Callable[[], dict[str, Any]],
+                 on_message: Callable[[dict[str, Any]], None], port: int | None = None) -> None:
+        self.store = store
+        self.title = title
+        self._config = config
+        self._on_message = on_message
+        self._clients: set[_Socket] = set()
+        self._seq = 0
+        self._ready = threading.Event()
+        self._error: BaseException | None = None
+        self._loop: IOLoop | None = None
+        self._http: tornado.httpserver.HTTPServer | None = None
+        self.port = 0
+        self._thread = threading.Thread(target=self._run, args=(port,), name="robotmodel-viewer", daemon=True)
+        self._thread.start()
+        self._ready.wait()
+        if self._error is not None:
+            raise self._error
+
+    @property
+    def url(self) -> str:
+        """The page's address."""
+        return f"http://{HOST}:{self.port}/"
+
+    def page_html(self) -> str:
+        """The control page with the robot's name filled in."""
+        from html import escape
+
+        return (ASSETS / "page.html").read_text(encoding="utf-8").replace("__TITLE__", escape(self.title))
+
+    def _bind(self, port: int | None) -> list[socket.socket]:
+        # An explicit port is used as given; the default tries 7000 upwards, as meshcat does.
+        candidates: Iterable[int] = [port] if port is not None else range(7000, 7100)
+        last: OSError | None = None
+        for candidate in candidates:
+            try:
+                return tornado.netutil.bind_sockets(candidate, address=HOST, family=socket.AF_INET)
+            except OSError as exc:
+                if exc.errno != errno.EADDRINUSE:
+                    raise ViewerError(f"cannot listen on {HOST}:{candidate}: {exc.strerror}") from None
+                last = exc
+        where = f"port {port}" if port is not None else "ports 7000-7099"
+        raise ViewerError(f"cannot listen on {HOST}: {where} in use ({last.strerror if last else ''})")
+
+    def _run(self, port: int | None) -> None:
+        loop = asyncio.new_event_loop()
+        asyncio.set_event_loop(loop)
+        try:
+            sockets = self._bind(port)
+            app = tornado.web.Application([
+                (r"/", _Page, {"server": self}),
+                (r"/ws", _Socket, {"server": self}),
+                (r"/assets/(.*)", tornado.web.StaticFileHandler, {"path": str(ASSETS)}),
+                (r"/meshcat/(.*)", tornado.web.StaticFileHandler, {"path": str(meshcat_dist())}),
+            ], websocket_max_message_size=1 << 20, log_function=_quiet)
+            self._http = tornado.httpserver.HTTPServer(app)
+            self._http.add_sockets(sockets)
+            self.port = sockets[0].getsockname()[1]
+            self._loop = IOLoop.current()
+        except BaseException as exc:
+            self._error = exc
+            self._ready.set()
+            loop.close()
+            return
+        self._ready.set()
+        try:
+            loop.run_forever()
+        finally:
+            loop.close()
+
+    # Everything below runs on the server's thread unless it says otherwise.
+
+    def call_soon(self, fn: Callable[[], None]) -> None:
+        """Run ``fn`` on the server's thread (safe from any thread)."""
+        if self._loop is not None:
+            self._loop.add_callback(fn)
+
+    def call_later(self, delay: float, fn: Callable[[], None]) -> None:
+        """Run ``fn`` on the server's thread after ``delay`` seconds (call on the server's thread)."""
+        if self._loop is not None:
+            self._loop.call_later(delay, fn)
+
+    def _greet(self, client: _Socket) -> None:
+        self._send_text(client, {"type": "config", **self._config()})
+        for command in self.store.commands():
+            client.write_message(command, binary=True)
+        self._seq += 1
+        self._send_text(client, {"type": "synced", "seq": self._seq})
+
+    def _send_text(self, client: _Socket, message: dict[str, Any]) -> None:
+        with contextlib.suppress(tornado.websocket.WebSocketClosedError):
+            client.write_message(json.dumps(message))
+
+    def broadcast(self, commands: Iterable[bytes], token: int | None = None) -> None:
+        """Send commands to every page, then a ``synced`` marker telling it to draw."""
+        commands = list(commands)
+        self._seq += 1
+        marker = json.dumps({"type": "synced", "seq": self._seq, "token": token})
+        for client in list(self._clients):
+            try:
+                for command in commands:
+                    client.write_message(command, binary=True)
+                client.write_message(marker)
+            except tornado.websocket.WebSocketClosedError:
+                self._clients.discard(client)
+
+    def broadcast_text(self, message: dict[str, Any]) -> None:
+        """Send one JSON message to every page."""
+        for client in list(self._clients):
+            self._send_text(client, message)
+
+    @property
+    def client_count(self) -> int:
+        """Number of connected pages."""
+        return len(self._clients)
+
+    def close(self) -> None:
+        """Stop serving and join the thread (safe from any thread, idempotent)."""
+        loop = self._loop
+        if loop is None:
+            return
+        self._loop = None
+
+        def stop() -> None:
+            if self._http is not None:
+                self._http.stop()
+            for client in list(self._clients):
+                client.close()
+            asyncio.get_event_loop().stop()
+
+        loop.add_callback(stop)
+        self._thread.join(timeout=5)
