@@ -5,8 +5,9 @@ caller (and the CLI) can catch one class and print one line. The tree::
 
     RobotModelError
     ├── XacroError                  xacro expansion failed (file, line when known)
-    │   ├── PackageNotFoundError    $(find pkg) / package:// could not be resolved
     │   └── UntrustedInputError     --untrusted refused $(env), an outside include, ...
+    ├── ResourceError               a package or file a robot names could not be resolved
+    │   └── PackageNotFoundError    $(find pkg) / package:// names an unknown package
     ├── URDFError                   the URDF is not a valid robot description
     │   └── URDFParseError          malformed XML or a malformed element
     ├── UnknownLinkError            a link name the robot does not have (every API)
@@ -40,6 +41,7 @@ __all__ = [
     "LookupException",
     "MessageError",
     "PackageNotFoundError",
+    "ResourceError",
     "RobotModelError",
     "TimeoutException",
     "TransformException",
@@ -60,7 +62,11 @@ class XacroError(RobotModelError):
     """xacro expansion failed; the message names the file and, when known, the line."""
 
 
-class PackageNotFoundError(XacroError):
+class ResourceError(RobotModelError):
+    """A package, URI or file a robot description names could not be resolved."""
+
+
+class PackageNotFoundError(ResourceError):
     """A ROS package named by ``$(find pkg)`` or ``package://pkg`` was not found."""
 
     def __init__(self, package: str, searched: list[str]) -> None:

@@ -3,13 +3,14 @@
 - :func:`expand` / :func:`expand_string`: xacro file or text to URDF text, bounded in
   time and memory, optionally refusing environment access and outside reads.
 - :func:`dependencies`: the files a xacro document includes (xacro's ``--deps``).
-- :func:`find_package` / :func:`resolve_uri`: ``$(find pkg)`` and ``package://`` lookups.
+- :func:`find_package` / :func:`resolve_uri`: re-exported from :mod:`robotmodel.resources`.
 """
 
 from __future__ import annotations
 
+# Package lookup lives in robotmodel.resources; these names stay for existing callers.
+from robotmodel.resources import find_package, resolve_uri
 from robotmodel.xacro._expand import DEFAULT_MEMORY_BYTES, DEFAULT_TIMEOUT_S, dependencies, expand, expand_string
-from robotmodel.xacro._packages import find_package, resolve_uri
 
 __all__ = [
     "DEFAULT_MEMORY_BYTES",

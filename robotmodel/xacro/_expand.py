@@ -10,8 +10,8 @@ import sys
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 
-from robotmodel.errors import PackageNotFoundError, UntrustedInputError, XacroError
-from robotmodel.xacro._packages import PathLike
+from robotmodel.errors import PackageNotFoundError, ResourceError, UntrustedInputError, XacroError
+from robotmodel.resources import PathLike
 
 __all__ = ["DEFAULT_MEMORY_BYTES", "DEFAULT_TIMEOUT_S", "dependencies", "expand", "expand_string"]
 
@@ -157,4 +157,6 @@ def _run(
         searched = reply.get("searched")
         where = list(searched) if isinstance(searched, list) else []
         raise PackageNotFoundError(str(reply["package"]), where)
+    if reply.get("kind") == "ResourceError":
+        raise ResourceError(f"{label}: {error}")
     raise XacroError(f"{label}: {error}")

@@ -18,7 +18,7 @@ from pathlib import Path
 from typing import Any
 
 from robotmodel.errors import RobotModelError, UntrustedInputError
-from robotmodel.xacro._packages import find_package, resolve_uri
+from robotmodel.resources import find_package, resolve_uri
 
 EXIT_ERROR = 3
 

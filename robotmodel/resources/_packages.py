@@ -21,9 +21,9 @@ from collections.abc import Iterator, Sequence
 from functools import lru_cache
 from pathlib import Path
 
-from robotmodel.errors import PackageNotFoundError, XacroError
+from robotmodel.errors import PackageNotFoundError
 
-__all__ = ["PathLike", "find_package", "resolve_uri"]
+__all__ = ["PathLike", "find_package"]
 
 PathLike = str | os.PathLike[str]
 
@@ -157,27 +157,3 @@ def find_package(
         return found
     searched.append("colcon install/ trees")
     raise PackageNotFoundError(name, searched)
-
-
-def resolve_uri(
-    uri: str, *, base_dir: PathLike | None = None, package_paths: Sequence[PathLike] = ()
-) -> Path:
-    """Turn ``package://pkg/rel``, ``file:///abs`` or a plain path into a filesystem path.
-
-    Plain relative paths are taken relative to ``base_dir`` (default: the working
-    directory). The result may not exist; an unknown package raises
-    :class:`PackageNotFoundError`.
-    """
-    base = Path(base_dir) if base_dir is not None else Path.cwd()
-    if uri.startswith("package://"):
-        rest = uri[len("package://") :]
-        pkg, _, rel = rest.partition("/")
-        if not pkg:
-            raise XacroError(f"malformed package URI '{uri}': no package name")
-        return find_package(pkg, start=base, package_paths=package_paths) / rel
-    if uri.startswith("file://"):
-        return Path(uri[len("file://") :])
-    if "://" in uri:
-        raise XacroError(f"unsupported URI scheme in '{uri}' (expected package://, file:// or a path)")
-    path = Path(uri)
-    return path if path.is_absolute() else base / path

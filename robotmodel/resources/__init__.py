@@ -1,0 +1,17 @@
+"""ROS packages and the files robots name, found without ROS.
+
+- :func:`find_package`: the folder of a ROS package (``$(find pkg)``), searched as the
+  module :mod:`robotmodel.resources._packages` documents.
+- :func:`resolve_uri`: ``package://pkg/rel``, ``file:///abs`` or a plain path to a path.
+
+Used by xacro expansion, lint's mesh checks and the viewer. Failures raise
+:class:`robotmodel.errors.ResourceError` (:class:`~robotmodel.errors.PackageNotFoundError`
+for an unknown package).
+"""
+
+from __future__ import annotations
+
+from robotmodel.resources._packages import PathLike, find_package
+from robotmodel.resources._uri import resolve_uri
+
+__all__ = ["PathLike", "find_package", "resolve_uri"]
