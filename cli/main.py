@@ -31,6 +31,8 @@ COMMAND_MODULES: tuple[str, ...] = (
     "robotmodel.cli.view_frames_cmd",
     "robotmodel.cli.rsp_cmd",
     "robotmodel.cli.jsp_cmd",
+    "robotmodel.cli.jsp_gui_cmd",
+    "robotmodel.cli.view_cmd",
 )
 
 

@@ -26,7 +26,7 @@ from robotmodel.viewer._materials import COLLISION_RGBA, DEFAULT_RGBA, PLACEHOLD
 from robotmodel.viewer._meshes import MeshData, load_mesh
 from robotmodel.viewer._resolve import resolve_mesh_uri
 
-__all__ = ["ProgressFn", "RobotScene", "build_scene", "origin_matrix"]
+__all__ = ["ProgressFn", "RobotScene", "build_scene", "frame_objects", "origin_matrix"]
 
 log = logging.getLogger("robotmodel.viewer")
 
@@ -180,17 +180,20 @@ def build_scene(desc: RobotDescription, *, package_paths: list[str] | None = Non
         collision = scene.group(link.name, "collision")
         scene.properties[(collision, "visible")] = wire.set_property(collision, "visible", False)
         frame = scene.group(link.name, "frame")
-        scene.objects.append((f"{frame}/axes", wire.set_object(f"{frame}/axes", _triad(frame_size))))
-        label = f"{frame}/label"
-        scene.objects.append((label, wire.set_object(label, wire.label_object(link.name, frame_size))))
-        scene.transforms[label] = wire.set_transform(label, _label_offset(frame_size))
+        for sub, command, transform in frame_objects(frame, link.name, frame_size):
+            scene.objects.append((sub, command))
+            if transform is not None:
+                scene.transforms[sub] = transform
         scene.properties[(frame, "visible")] = wire.set_property(frame, "visible", False)
     scene.meshes_loaded = sum(1 for d in loader.loaded.values() if not isinstance(d, str))
     scene.meshes_cached = loader.cached
     return scene
 
 
-def _label_offset(size: float) -> npt.NDArray[np.float64]:
-    m = np.eye(4)
-    m[:3, 3] = (0.0, 0.0, size * 0.3)
-    return m
+def frame_objects(path: str, name: str, size: float) -> list[tuple[str, bytes, bytes | None]]:
+    """Commands drawing a named triad under ``path``: (sub-path, set_object, set_transform or None)."""
+    offset = np.eye(4)
+    offset[:3, 3] = (0.0, 0.0, size * 0.3)
+    label = f"{path}/label"
+    return [(f"{path}/axes", wire.set_object(f"{path}/axes", _triad(size)), None),
+            (label, wire.set_object(label, wire.label_object(name, size * 1.5)), wire.set_transform(label, offset))]

@@ -29,6 +29,8 @@ FramesSpec = str | Iterable[str] | None
 JointCallback = Callable[[dict[str, float]], None]
 
 _CAMERA = "/Cameras/default/rotated/<object>"
+#: Scene root of the frames drawn from /tf (beside the robot, not inside its tree).
+TF_ROOT = "tf"
 
 
 class Viewer:
@@ -62,6 +64,7 @@ class Viewer:
         self._last_flush = 0.0
         self._callbacks: list[JointCallback] = []
         self._frames: list[str] = []
+        self._tf: dict[str, npt.NDArray[np.float64]] = {}
         self._collisions = collisions
         with self._lock:
             self._fill_store()
@@ -278,6 +281,36 @@ class Viewer:
         with self._lock:
             commands = self._set_group_visibility("visual", visible)
         self._send(commands)
+
+    def show_tf(self, poses: Mapping[str, npt.ArrayLike]) -> None:
+        """Draw TF frames as named triads at world poses (frame name → 4×4 matrix); others are removed."""
+        from robotmodel.viewer._scene import frame_objects
+
+        with self._lock:
+            commands: list[bytes] = []
+            for name in [n for n in self._tf if n not in poses]:
+                path = wire.path_of(TF_ROOT, name)
+                self._tf.pop(name)
+                self._store.drop(path)
+                commands.append(wire.delete(path))
+            for name, pose in poses.items():
+                path = wire.path_of(TF_ROOT, name)
+                matrix = np.asarray(pose, dtype=np.float64)
+                if name not in self._tf:
+                    for sub, command, transform in frame_objects(path, name, 0.1):
+                        self._store.objects[sub] = command
+                        commands.append(command)
+                        if transform is not None:
+                            self._store.transforms[sub] = transform
+                            commands.append(transform)
+                elif np.array_equal(self._tf[name], matrix):
+                    continue
+                self._tf[name] = matrix
+                command = wire.set_transform(path, matrix)
+                self._store.transforms[path] = command
+                commands.append(command)
+        if commands:
+            self._send(commands)
 
     # ----- output ---------------------------------------------------------------------------------------------
 

@@ -1,0 +1,189 @@
+"""``robotmodel view``: the robot in the browser (meshcat), with joint sliders, frames and live modes."""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+import tempfile
+import time
+from pathlib import Path
+from typing import Any
+
+from robotmodel.cli._common import add_mapping_arguments
+
+from robotmodel.errors import RobotModelError
+
+
+def add_viewer_arguments(parser: argparse.ArgumentParser, *, live_flags: bool = True) -> None:
+    """The arguments ``view`` and ``joint-state-publisher-gui`` share."""
+    add_mapping_arguments(parser)
+    parser.add_argument("file", metavar="FILE", nargs="?",
+                        help="a .urdf or .xacro file ('-' reads stdin; default: the robot_description topic)")
+    parser.add_argument("--package-path", action="append", default=[], metavar="DIR",
+                        help="search DIR first for ROS packages ($(find pkg), package://); repeatable")
+    parser.add_argument("--untrusted", action="store_true",
+                        help="refuse $(env), $(optenv) and reads outside the input's package roots")
+    parser.add_argument("--port", type=int, default=None,
+                        help="serve on this port of 127.0.0.1 (default: 7000, or the next free one)")
+    parser.add_argument("--open", action="store_true", help="open the page in the default web browser")
+    parser.add_argument("--collisions", action="store_true", help="show collision geometry too")
+    parser.add_argument("--frames", default="none", metavar="all|none|LINK,...",
+                        help="draw these links' frames as named axes (default: none)")
+    parser.add_argument("--joint", action="append", default=[], metavar="NAME=VALUE",
+                        help="initial joint value (radians or metres); repeatable")
+    parser.add_argument("--no-cache", action="store_true", help="convert meshes again, ignoring the disk cache")
+    parser.add_argument("--connect", action="append", default=[], metavar="ENDPOINT",
+                        help="zenoh endpoint to connect to (e.g. tcp/192.168.1.10:7447); repeatable")
+    if live_flags:
+        parser.add_argument("--follow", action="store_true",
+                            help="draw the robot from /joint_states on the bus")
+        parser.add_argument("--tf", action="store_true", help="draw the frames on /tf and /tf_static")
+        parser.add_argument("--publish", action="store_true", help="publish the sliders' values on /joint_states")
+
+
+def register(sub: Any) -> None:
+    """Add the ``view`` subcommand."""
+    parser: argparse.ArgumentParser = sub.add_parser(
+        "view", help="show the robot in the browser, with joint sliders (meshcat)",
+        description="Serve a page on 127.0.0.1 showing the robot's visuals (meshes included), one slider "
+        "per movable joint (as joint_state_publisher_gui), and frames as named axes. With --static-html or "
+        "--screenshot it writes the file and exits instead. Runs until Ctrl-C.",
+    )
+    add_viewer_arguments(parser)
+    parser.add_argument("--static-html", metavar="OUT.html",
+                        help="write one self-contained page of the robot (offline-viewable) and exit")
+    parser.add_argument("--screenshot", metavar="OUT.png",
+                        help="render the robot with headless Chromium to a PNG and exit")
+    parser.add_argument("--size", default="1280x800", metavar="WxH", help="screenshot size (default 1280x800)")
+    parser.set_defaults(func=run)
+
+
+def joint_values(words: list[str]) -> dict[str, float]:
+    """``NAME=VALUE`` words to a dict, with one-line errors."""
+    values: dict[str, float] = {}
+    for word in words:
+        name, sep, text = word.partition("=")
+        if not sep or not name:
+            raise RobotModelError(f"--joint expects NAME=VALUE, got '{word}'")
+        try:
+            values[name] = float(text)
+        except ValueError:
+            raise RobotModelError(f"--joint {name}: '{text}' is not a number") from None
+    return values
+
+
+def frames_spec(text: str) -> str | list[str]:
+    """``all``, ``none`` or a comma-separated list of links."""
+    if text in ("all", "none"):
+        return text
+    return [name.strip() for name in text.split(",") if name.strip()]
+
+
+class _Progress:
+    """A mesh-loading bar on stderr (only on a terminal), and one summary line."""
+
+    def __init__(self) -> None:
+        self.tty = sys.stderr.isatty()
+        self.start = time.monotonic()
+        self.total = 0
+
+    def __call__(self, done: int, total: int, label: str) -> None:
+        self.total = total
+        if not self.tty or total == 0:
+            return
+        width = 30
+        filled = width * done // total
+        sys.stderr.write(f"\rmeshes [{'#' * filled}{'.' * (width - filled)}] {done}/{total} {label[:40]:<40}")
+        if done == total:
+            sys.stderr.write("\r" + " " * (width + 60) + "\r")
+        sys.stderr.flush()
+
+
+def _write_bytes_atomic(path: str, data: bytes) -> None:
+    target = Path(path)
+    target.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", dir=target.parent)
+    try:
+        with os.fdopen(fd, "wb") as f:
+            f.write(data)
+        Path(tmp).chmod(0o644)
+        os.replace(tmp, target)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+
+
+def _size(text: str) -> tuple[int, int]:
+    w, sep, h = text.lower().partition("x")
+    try:
+        width, height = int(w), int(h)
+    except ValueError:
+        width = height = 0
+    if not sep or width <= 0 or height <= 0:
+        raise RobotModelError(f"--size expects WIDTHxHEIGHT, got '{text}'")
+    return width, height
+
+
+def _load(args: argparse.Namespace) -> Any:
+    from robotmodel.cli._common import load_description
+
+    desc, _ = load_description(args)
+    return desc
+
+
+def run(args: argparse.Namespace) -> int:
+    """Build the viewer, then write files or serve until Ctrl-C."""
+    from robotmodel.cli._live import serve_live
+
+    initial = joint_values(args.joint)
+    frames = frames_spec(args.frames)
+    static = bool(getattr(args, "static_html", None) or getattr(args, "screenshot", None))
+    if static:
+        if args.file is None:
+            raise RobotModelError("--static-html and --screenshot need FILE")
+        size = _size(args.size)
+        return _write_files(args, _load(args), initial, frames, size)
+    desc = _load(args) if args.file is not None else None
+    code: int = serve_live(args, desc, initial, frames)
+    return code
+
+
+def make_viewer(args: argparse.Namespace, desc: Any, initial: dict[str, float], frames: Any, *,
+                serve: bool) -> Any:
+    """A Viewer for ``desc`` with the command's options (progress bar, cache, frames, joints)."""
+    from robotmodel.viewer import Viewer
+
+    progress = _Progress()
+    cache = Path(tempfile.mkdtemp(prefix="robotmodel-nocache-")) if args.no_cache else None
+    viewer = Viewer(desc, serve=serve, port=args.port, package_paths=args.package_path, cache_dir=cache,
+                    progress=progress, collisions=args.collisions, frames=frames)
+    if initial:
+        viewer.display(initial)
+    scene = viewer.scene
+    if progress.total:
+        print(f"loaded {scene.meshes_loaded} meshes ({scene.meshes_cached} from the cache) in "
+              f"{time.monotonic() - progress.start:.2f} s", file=sys.stderr)
+    if cache is not None:
+        import shutil
+
+        shutil.rmtree(cache, ignore_errors=True)
+    return viewer
+
+
+def _write_files(args: argparse.Namespace, desc: Any, initial: dict[str, float], frames: Any,
+                 size: tuple[int, int]) -> int:
+    from robotmodel.cli._common import write_atomic
+
+    from robotmodel.viewer import screenshot_html
+
+    viewer = make_viewer(args, desc, initial, frames, serve=False)
+    html = viewer.static_html()
+    png = screenshot_html(html, width=size[0], height=size[1]) if args.screenshot else None
+    if args.static_html:
+        write_atomic(args.static_html, html)
+        print(f"wrote {args.static_html}", file=sys.stderr)
+    if png is not None:
+        _write_bytes_atomic(args.screenshot, png)
+        print(f"wrote {args.screenshot}", file=sys.stderr)
+    return 0
