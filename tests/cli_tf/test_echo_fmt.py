@@ -12,6 +12,7 @@ import math
 import numpy as np
 import pytest
 import pytransform3d.rotations as pr
+from cli_tf.expected import EXPECTED_STATIC
 from robotmodel.cli._echo_fmt import (
     USAGE,
     EchoArgs,
@@ -22,19 +23,6 @@ from robotmodel.cli._echo_fmt import (
     parse_echo_args,
     waiting_message,
 )
-
-EXPECTED_STATIC = """\
-At time 0.0
-- Translation: [1.000, 2.000, 3.000]
-- Rotation: in Quaternion [-0.475, -0.076, 0.240, 0.843]
-- Rotation: in RPY (radian) [-1.000, 0.100, 0.500]
-- Rotation: in RPY (degree) [-57.296, 5.730, 28.648]
-- Matrix:
-  0.873 -0.333 -0.356  1.000
-  0.477  0.434  0.764  2.000
- -0.100 -0.837  0.538  3.000
-  0.000  0.000  0.000  1.000
-"""
 
 
 def test_static_example_block():

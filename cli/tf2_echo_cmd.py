@@ -1,0 +1,108 @@
+"""``robotmodel tf2-echo SOURCE TARGET [RATE]`` (alias ``tf2_echo``): print a transform as it arrives.
+
+Prints TARGET's pose in SOURCE (``lookupTransform(SOURCE, TARGET, latest)``) every
+1/RATE seconds (default 1 Hz) in tf2_echo's format; until the frames are connected it logs
+tf2_echo's throttled ``Waiting for transform ...`` line. Ctrl-C or SIGTERM end it (exit 0).
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from typing import Any
+
+from robotmodel.cli._bus_args import split_connect, stop_on_signals
+from robotmodel.cli._echo_fmt import (
+    USAGE,
+    EchoArgsError,
+    failure_text,
+    format_echo,
+    parse_echo_args,
+    waiting_message,
+)
+from robotmodel.cli._rosfmt import ros_log
+
+__all__ = ["can_transform_reason", "register", "run"]
+
+_NODE = "tf2_echo"
+
+
+def register(sub: Any) -> None:
+    """Add the ``tf2-echo`` subcommand (it parses its own words, as ROS's does)."""
+    parser: argparse.ArgumentParser = sub.add_parser(
+        "tf2-echo", aliases=["tf2_echo"], prefix_chars="+", add_help=False,
+        help="print a transform from the bus in tf2_echo's format",
+        description="tf2-echo SOURCE TARGET [RATE] [--connect ENDPOINT]",
+    )
+    parser.add_argument("words", nargs="*")
+    parser.set_defaults(func=run)
+
+
+def can_transform_reason(buffer: Any, target: str, source: str) -> str:
+    """Empty when ``target <- source`` can be looked up at the latest time, else tf2's canTransform text."""
+    if target == source:
+        return ""
+    known = set(buffer.all_frame_names())
+    for arg, frame in (("target_frame", target), ("source_frame", source)):
+        if not frame:
+            why = "in tf2 frame_ids cannot be empty"
+        elif frame.startswith("/"):
+            why = "in tf2 frame_ids cannot start with a '/'"
+        elif frame not in known:
+            why = "frame does not exist"
+        else:
+            continue
+        return f'Invalid frame ID "{frame}" passed to canTransform argument {arg} - {why}'
+    ok, reason = buffer.can_transform_ns(target, source, 0)
+    return "" if ok else str(reason)
+
+
+def run(args: argparse.Namespace) -> int:
+    """Listen, wait for the frames, then print the transform at the given rate."""
+    words, endpoints = split_connect(args.words)
+    if words and words[0] in ("-h", "--help"):
+        print(USAGE, end="", flush=True)
+        return 0
+    try:
+        echo = parse_echo_args(words)
+    except EchoArgsError as exc:
+        print(str(exc), end="" if exc.to_stdout else "\n", file=sys.stdout if exc.to_stdout else sys.stderr,
+              flush=True)
+        return int(exc.code)
+
+    stop = stop_on_signals()
+    from robotmodel.bus import Node
+    from robotmodel.errors import TransformException
+    from robotmodel.tf import Buffer, Time
+    from robotmodel.tf_ros import TransformListener
+
+    period = 1.0 / echo.rate_hz
+    source, target = echo.source_frame, echo.target_frame
+    buffer = Buffer()
+    with Node(_NODE, connect=endpoints) as node, TransformListener(buffer, node):
+        last_log = -1.0
+        while not stop.is_set():
+            reason = can_transform_reason(buffer, source, target)
+            if not reason:
+                break
+            now = time.monotonic()
+            if last_log < 0 or now - last_log >= 1.0:
+                ros_log("INFO", _NODE, waiting_message(source, target, reason))
+                last_log = now
+            stop.wait(period)
+        printed = False
+        while not stop.is_set():
+            try:
+                t = buffer.lookup_transform(source, target, Time())
+            except TransformException as exc:
+                text = failure_text(time.time_ns() / 1e9, str(exc), buffer.all_frames_as_string(), printed)
+            else:
+                tr, rot, stamp = t.transform.translation, t.transform.rotation, t.header.stamp
+                text = format_echo(stamp.sec, stamp.nanosec, (tr.x, tr.y, tr.z), (rot.x, rot.y, rot.z, rot.w))
+                printed = True
+            sys.stdout.write(text)
+            sys.stdout.flush()
+            stop.wait(period)
+    return 0
+

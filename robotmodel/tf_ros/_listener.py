@@ -1,0 +1,159 @@
+"""tf2_ros's TransformListener: fills a Buffer from ``/tf`` and ``/tf_static``."""
+
+from __future__ import annotations
+
+import logging
+import threading
+import time
+from types import TracebackType
+from typing import Any
+
+from robotmodel.msgs import TFMessage
+from robotmodel.tf_ros._node import OwnedNode
+
+__all__ = ["DEFAULT_AUTHORITY", "TransformListener"]
+
+#: The authority tf2_ros's Python listener records for every transform.
+DEFAULT_AUTHORITY = "default_authority"
+
+_log = logging.getLogger("robotmodel.tf_ros")
+_WARN_PERIOD_S = 5.0
+
+
+class TransformListener:
+    """Subscribes to ``/tf`` and ``/tf_static`` and inserts what arrives into ``buffer``.
+
+    Messages are handled on the bus's receiving thread, so ``buffer.lookup_transform(...,
+    timeout=...)`` called from any other thread wakes as soon as the data it needs arrives.
+    Static transforms go in with ``set_transform_static``.
+
+    ``node`` is a :class:`robotmodel.bus.Node`; without one the listener opens its own
+    (``node_options``, e.g. ``domain_id`` or ``connect``, go to its constructor) and closes
+    it in :meth:`close`. The QoS defaults are tf2_ros's (depth 100; ``/tf_static`` transient
+    local, so transforms latched before the listener started arrive too).
+
+    ``authority`` is what the buffer records as each transform's broadcaster (shown by
+    ``all_frames_as_yaml`` and view_frames). By default it is the publishing node's fully
+    qualified name, read from the publisher's GID in each sample's attachment and the
+    graph's liveliness tokens (ROS 1's listener recorded the publisher's name too);
+    ``default_authority`` (tf2_ros Python's constant) while the publisher is not known.
+    Pass a string to record that instead. ``spin_thread`` is accepted for tf2_ros
+    compatibility: the bus always delivers on its own thread.
+
+    A payload that does not decode as a TFMessage is dropped with a rate-limited warning.
+    """
+
+    def __init__(self, buffer: Any, node: Any | None = None, *, spin_thread: bool = True,
+                 qos: Any | None = None, static_qos: Any | None = None, authority: str | None = None,
+                 **node_options: Any) -> None:
+        from robotmodel.bus import QOS_TF, QOS_TF_STATIC_LISTENER, codec_for
+
+        del spin_thread
+        self.buffer = buffer
+        self._authority = authority
+        self._names: dict[bytes, str] = {}
+        self._warn_lock = threading.Lock()
+        self._last_warning = -1e9
+        self._held = 0
+        # Samples may arrive while a subscription is being created (latched ones do), so the
+        # decoder must be ready before either exists.
+        self._codec = codec_for(TFMessage)
+        self._node = OwnedNode(node, "transform_listener_impl_", **node_options)
+        self._subs: list[Any] = []
+        self._closed = False
+        try:
+            n = self._node.node
+            if authority is None:
+                # Start following the graph now, not on the receive thread at the first sample.
+                n.context.graph  # noqa: B018
+            self._subs.append(n.create_subscription(TFMessage, "/tf", self._on_tf,
+                                                    qos if qos is not None else QOS_TF, raw=True))
+            self._subs.append(n.create_subscription(TFMessage, "/tf_static", self._on_tf_static,
+                                                    static_qos if static_qos is not None
+                                                    else QOS_TF_STATIC_LISTENER, raw=True))
+        except BaseException:
+            self.close()
+            raise
+
+    @property
+    def node(self) -> Any:
+        """The bus node the subscriptions live on."""
+        return self._node.node
+
+    # The bus hands over undecoded samples so that the publisher's GID is at hand.
+    def _on_tf(self, raw: Any) -> None:
+        msg = self._decode(raw)
+        if msg is not None:
+            self.callback(msg, self._who(raw.attachment.gid))
+
+    def _on_tf_static(self, raw: Any) -> None:
+        msg = self._decode(raw)
+        if msg is not None:
+            self.static_callback(msg, self._who(raw.attachment.gid))
+
+    def _decode(self, raw: Any) -> TFMessage | None:
+        try:
+            msg: TFMessage = self._codec.decode(raw.payload)
+        except Exception as exc:  # any decoder failure means a bad payload: drop it, never crash
+            self._warn(f"dropped a message on '{raw.topic}' that does not decode as tf2_msgs/msg/TFMessage: "
+                       f"{type(exc).__name__}: {exc}")
+            return None
+        return msg
+
+    def _warn(self, text: str) -> None:
+        now = time.monotonic()
+        with self._warn_lock:
+            if now - self._last_warning < _WARN_PERIOD_S:
+                self._held += 1
+                return
+            self._last_warning = now
+            held, self._held = self._held, 0
+        _log.warning("%s%s", text, f" ({held} more since the last warning)" if held else "")
+
+    def _who(self, gid: bytes) -> str:
+        if self._authority is not None:
+            return self._authority
+        name = self._names.get(gid)
+        if name is None:
+            from robotmodel.bus import EntityKind
+
+            for entity in self._node.node.context.graph.entities():
+                if entity.kind is EntityKind.PUBLISHER and entity.gid == gid:
+                    name = self._names[gid] = entity.node_fqn
+                    break
+            else:
+                return DEFAULT_AUTHORITY
+        return name
+
+    def callback(self, data: TFMessage, authority: str = DEFAULT_AUTHORITY) -> None:
+        """Insert the transforms of one ``/tf`` message."""
+        for transform in data.transforms:
+            self.buffer.set_transform(transform, authority)
+
+    def static_callback(self, data: TFMessage, authority: str = DEFAULT_AUTHORITY) -> None:
+        """Insert the transforms of one ``/tf_static`` message as static."""
+        for transform in data.transforms:
+            self.buffer.set_transform_static(transform, authority)
+
+    def unregister(self) -> None:
+        """Withdraw both subscriptions (tf2_ros's name); the buffer keeps its data."""
+        subs, self._subs = self._subs, []
+        for sub in subs:
+            sub.close()
+
+    def close(self) -> None:
+        """Unregister, and close the node if this listener opened it; harmless twice."""
+        if self._closed:
+            return
+        self._closed = True
+        try:
+            self.unregister()
+        finally:
+            self._node.close()
+
+    def __enter__(self) -> TransformListener:
+        return self
+
+    def __exit__(self, exc_type: type[BaseException] | None, exc: BaseException | None,
+                 tb: TracebackType | None) -> None:
+        self.close()
