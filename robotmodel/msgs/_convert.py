@@ -249,9 +249,10 @@ def to_rosbags(msg: Message, store: Typestore | None = None) -> Any:
 
 
 def _from(obj: Any) -> Any:
-    cls = _CLASSES.get(getattr(obj, "__msgtype__", ""))
+    msgtype = getattr(obj, "__msgtype__", None)
+    cls = _CLASSES.get(msgtype) if isinstance(msgtype, str) else None
     if cls is None:
-        raise MessageError(f"no robotmodel message class for {type(obj).__name__!r}")
+        raise MessageError(f"no robotmodel message class for '{msgtype or type(obj).__name__}'")
     values = []
     for name in _FIELDS[cls]:
         value = getattr(obj, name)

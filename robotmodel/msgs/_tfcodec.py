@@ -71,6 +71,8 @@ def _string(data: bytes | memoryview, off: int, end: int) -> tuple[str, int]:
     off += 4
     if n == 0 or off + n > end:
         raise MessageError(f"invalid string length {n} at offset {off - 8}")
+    if data[off + n - 1] != 0:
+        raise MessageError(f"missing string terminator at offset {off + n - 5}")
     return bytes(data[off:off + n - 1]).decode(), off + n
 
 

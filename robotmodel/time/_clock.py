@@ -188,8 +188,9 @@ class PlaybackClock:
 class Rate:
     """Loop at a fixed frequency on any clock: ``rate = Rate(10.0, clock); rate.sleep()``.
 
-    Each ``sleep()`` returns at the next multiple of the period after the first call;
-    a loop that fell more than one period behind restarts from now instead of bursting.
+    Wake-ups fall on the multiples of the period after the Rate's creation, as rclpy's
+    timer-based Rate; a loop that fell more than one period behind restarts from now
+    instead of bursting.
     """
 
     def __init__(self, hz: float, clock: Clock | None = None) -> None:
@@ -197,7 +198,7 @@ class Rate:
             raise ValueError(f"rate must be positive, got {hz} Hz")
         self._period = Duration(nanoseconds=round(_NS / hz))
         self._clock: Clock = clock if clock is not None else SystemClock()
-        self._next: Time | None = None
+        self._last = self._clock.now()
 
     @property
     def period(self) -> Duration:
@@ -207,7 +208,7 @@ class Rate:
     def sleep(self) -> None:
         """Sleep until the next period boundary."""
         now = self._clock.now()
-        if self._next is None or now - self._next > self._period:
-            self._next = now
-        self._next = self._next + self._period
-        self._clock.sleep_until(self._next)
+        if now - self._last > self._period + self._period:
+            self._last = now
+        self._last = self._last + self._period
+        self._clock.sleep_until(self._last)
