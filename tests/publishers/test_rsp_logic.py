@@ -149,7 +149,7 @@ def test_zero_frequency_means_no_cap(arm):
 
 @pytest.mark.parametrize("hz", [-1.0, 1000.5, math.nan])
 def test_frequency_out_of_range(arm, hz):
-    with pytest.raises(PublisherError, match="^publish_frequency must be between 0 and 1000$"):
+    with pytest.raises(PublisherError, match=r"^publish_frequency must be between 0 and 1000$"):
         RobotStateLogic(arm, publish_frequency=hz)
 
 
