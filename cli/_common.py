@@ -6,6 +6,7 @@ Kept free of heavy imports: every command module imports this at ``robotmodel --
 from __future__ import annotations
 
 import argparse
+import logging
 import os
 import sys
 import tempfile
@@ -20,6 +21,7 @@ __all__ = [
     "CommandParser",
     "add_mapping_arguments",
     "add_model_arguments",
+    "apply_verbose",
     "load_description",
     "read_stdin_document",
     "split_mappings",
@@ -130,6 +132,15 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
         "--untrusted", action="store_true",
         help="refuse $(env), $(optenv) and reads outside the input's package roots",
     )
+    parser.add_argument(
+        "--verbose", action="store_true", help="say which copy of each ROS package was used, and why",
+    )
+
+
+def apply_verbose(args: argparse.Namespace) -> None:
+    """With ``--verbose``, let the package search say which copy of each package it used."""
+    if getattr(args, "verbose", False):
+        logging.getLogger("robotmodel.resources").setLevel(logging.INFO)
 
 
 def read_stdin_document() -> str:
@@ -146,6 +157,7 @@ def load_description(args: argparse.Namespace) -> tuple[RobotDescription, Path]:
     """Load the command's FILE (or stdin for ``-``); returns it and the folder relative paths start from."""
     from robotmodel.model import load
 
+    apply_verbose(args)
     kwargs: dict[str, Any] = {"package_paths": args.package_path, "untrusted": args.untrusted}
     if args.file == "-":
         return load(read_stdin_document(), args.mappings, **kwargs), Path.cwd()

@@ -11,7 +11,7 @@ import argparse
 import sys
 from typing import Any
 
-from robotmodel.cli._common import add_model_arguments, read_stdin_document, write_atomic
+from robotmodel.cli._common import add_model_arguments, apply_verbose, read_stdin_document, write_atomic
 
 VERBOSITY_HELP = (
     "set verbosity level: 0 quiet, suppressing warnings; 1 default, warnings and error locations; "
@@ -45,6 +45,7 @@ def run(args: argparse.Namespace) -> int:
     """Expand and print or write the result."""
     from robotmodel.xacro import dependencies, expand, expand_string
 
+    apply_verbose(args)
     if args.in_order:
         # xacro's own notice, word for word.
         print("xacro: in-order processing became default in ROS Melodic. You can drop the option.",

@@ -1,38 +1,78 @@
-"""Find ROS packages and resolve ``package://`` URIs without ROS.
+"""Find ROS packages without ROS.
 
 Search order (closest first), as a ROS user expects from ``$(find pkg)``:
 
 1. explicit package paths (``--package-path``), each a package or a folder of packages;
-2. the input file's own tree: each ancestor folder, nearest first, crawled a few levels
-   down for a ``package.xml`` whose ``<name>`` matches (so a repository's own copy of a
-   package wins over a same-named one elsewhere), or holding an ament resource index
-   that names it (an install prefix);
+2. the input's own tree, never beyond its *bound*: each folder from the input's up to
+   the bound, nearest first, crawled a few levels down for a ``package.xml`` whose
+   ``<name>`` matches (so a repository's own copy of a package wins over a same-named
+   one elsewhere), or holding an ament resource index naming it (an install prefix).
+   The bound is the input's workspace (the nearest ancestor holding ``.catkin_workspace``,
+   ``.catkin_tools``, ``install/.colcon_install_layout``, ``install/setup.sh``,
+   ``devel/setup.sh`` or ``build/COLCON_IGNORE``), else its repository (the nearest
+   ancestor holding ``.git``), else the folder holding its package chain (the parent of
+   the outermost ancestor holding a ``package.xml``). ``/``, ``$HOME`` and the system
+   temporary folder are never a bound (a package directly in one of them bounds
+   itself); a file with none of these around it has no own-tree search;
 3. ``ROS_PACKAGE_PATH`` (ROS 1), crawled;
 4. ``AMENT_PREFIX_PATH`` (ROS 2 ament resource index);
-5. colcon ``install/`` trees beside the input's ancestors and the working directory.
+5. colcon ``install/`` trees of the folders within the bound and of the working directory.
+
+Each package found is logged once (logger ``robotmodel.resources``, level INFO) with the
+copy used and why, and recorded for :func:`resolved_packages`.
 """
 
 from __future__ import annotations
 
+import logging
 import os
 import re
+import tempfile
 import xml.etree.ElementTree as ET
 from collections.abc import Iterator, Sequence
 from functools import lru_cache
 from pathlib import Path
+from typing import NamedTuple
 
 from robotmodel.errors import PackageNotFoundError
 
-__all__ = ["PathLike", "find_package"]
+__all__ = ["PathLike", "ResolvedPackage", "find_package", "record_package", "resolved_packages"]
 
 PathLike = str | os.PathLike[str]
 
-# Crawling ancestors is bounded: an input near "/" must not walk the whole disk.
-_ANCESTOR_LEVELS = 6
-_ANCESTOR_DEPTH = 3
+_log = logging.getLogger("robotmodel.resources")
+
+_ANCESTOR_DEPTH = 4
 _CRAWL_DIR_BUDGET = 20000
 _IGNORE_MARKERS = ("CATKIN_IGNORE", "COLCON_IGNORE", "AMENT_IGNORE")
+_WORKSPACE_MARKERS = (
+    ".catkin_workspace", ".catkin_tools", "install/.colcon_install_layout", "install/setup.sh",
+    "devel/setup.sh", "build/COLCON_IGNORE",
+)
 _NAME_RE = re.compile(r"<name>\s*([^<\s]+)\s*</name>")
+
+
+class ResolvedPackage(NamedTuple):
+    """A package as found: its folder and how the search reached it."""
+
+    folder: Path
+    how: str
+
+
+_resolved: dict[str, ResolvedPackage] = {}
+
+
+def resolved_packages() -> dict[str, ResolvedPackage]:
+    """Every package found so far in this process (by name), with the copy used and why."""
+    return dict(_resolved)
+
+
+def record_package(name: str, folder: Path, how: str) -> None:
+    """Note that ``name`` resolved to ``folder``; logged at INFO the first time."""
+    found = ResolvedPackage(folder, how)
+    if _resolved.get(name) != found:
+        _resolved[name] = found
+        _log.info("package '%s': %s (%s)", name, folder, how)
 
 
 def _package_name(package_xml: Path) -> str | None:
@@ -76,9 +116,16 @@ def _crawl(root: str, max_depth: int) -> tuple[tuple[str, str], ...]:
         queue.extend(
             (Path(e.path), depth + 1)
             for e in entries
-            if e.is_dir(follow_symlinks=True) and not e.name.startswith(".") and e.name != "__pycache__"
+            if _is_dir(e) and not e.name.startswith(".") and e.name != "__pycache__"
         )
     return tuple(found)
+
+
+def _is_dir(entry: os.DirEntry[str]) -> bool:
+    try:
+        return entry.is_dir(follow_symlinks=True)
+    except OSError:
+        return False
 
 
 def _in_crawl(name: str, root: Path, max_depth: int) -> Path | None:
@@ -88,13 +135,51 @@ def _in_crawl(name: str, root: Path, max_depth: int) -> Path | None:
     return None
 
 
-def _ancestors(start: Path) -> Iterator[Path]:
-    folder = start if start.is_dir() else start.parent
-    home = Path.home()
-    for level, anc in enumerate([folder, *folder.parents]):
-        if level >= _ANCESTOR_LEVELS or anc == Path(anc.anchor) or anc == home:
+def _never_a_bound() -> set[Path]:
+    """Folders shared by unrelated projects: crawling them would find strangers' packages."""
+    shared = {Path("/"), Path(tempfile.gettempdir()).resolve()}
+    home = os.environ.get("HOME")
+    if home:
+        shared.add(Path(home).resolve())
+    return shared
+
+
+class _Bound(NamedTuple):
+    folder: Path
+    kind: str  # "workspace", "repository" or "package folder"
+
+
+def _upward(folder: Path) -> Iterator[Path]:
+    """``folder`` and its ancestors, stopping before ``/`` and ``$HOME``."""
+    shared = _never_a_bound()
+    for anc in [folder, *folder.parents]:
+        if anc in shared or anc == Path(anc.anchor):
             return
         yield anc
+
+
+def _bound(folder: Path) -> _Bound | None:
+    """The outermost folder the search beside an input in ``folder`` may reach (see the module doc)."""
+    chain = list(_upward(folder))
+    for anc in chain:
+        if any((anc / marker).exists() for marker in _WORKSPACE_MARKERS):
+            return _Bound(anc, "workspace")
+    for anc in chain:
+        if (anc / ".git").exists():
+            return _Bound(anc, "repository")
+    packages = [anc for anc in chain if (anc / "package.xml").is_file()]
+    if not packages:
+        return None
+    outermost = packages[-1]
+    holder = outermost.parent
+    return _Bound(holder if holder in chain else outermost, "package folder")
+
+
+def _within(folder: Path, bound: Path) -> Iterator[Path]:
+    for anc in [folder, *folder.parents]:
+        yield anc
+        if anc == bound:
+            return
 
 
 def _from_ament(name: str, prefixes: Sequence[str]) -> Path | None:
@@ -104,15 +189,20 @@ def _from_ament(name: str, prefixes: Sequence[str]) -> Path | None:
     return None
 
 
-def _from_colcon(name: str, bases: Sequence[Path]) -> Path | None:
+def _from_colcon(name: str, bases: Sequence[Path]) -> tuple[Path, Path] | None:
     for base in bases:
         install = base / "install"
         if not install.is_dir():
             continue
         for candidate in (install / name / "share" / name, install / "share" / name):
             if (candidate / "package.xml").is_file():
-                return candidate
+                return candidate, install
     return None
+
+
+def _found(name: str, folder: Path, how: str) -> Path:
+    record_package(name, folder, how)
+    return folder
 
 
 def find_package(
@@ -120,40 +210,46 @@ def find_package(
 ) -> Path:
     """Return the folder of ROS package ``name`` (its share directory), searching like ROS.
 
-    ``start`` is the file (or folder) whose tree is searched after the explicit
-    ``package_paths``. Raises :class:`PackageNotFoundError` naming where it looked.
+    ``start`` is the input file (or its folder) whose own tree is searched, within its
+    bound, after the explicit ``package_paths`` (see the module documentation for the
+    order). Raises :class:`PackageNotFoundError` naming where it looked.
     """
     searched: list[str] = []
     for raw in package_paths:
         root = Path(raw).resolve()
         found = _in_crawl(name, root, 8)
         if found:
-            return found
+            return _found(name, found, f"--package-path {root}")
         searched.append(f"--package-path {root}")
-    start_path = Path(start).resolve() if start is not None else None
-    if start_path is not None:
-        for anc in _ancestors(start_path):
-            # An installed package lives in <prefix>/share/<pkg>, indexed by its prefix.
-            found = _in_crawl(name, anc, _ANCESTOR_DEPTH) or _from_ament(name, [str(anc)])
-            if found:
-                return found
-        searched.append(f"the tree of {start_path}")
+    own: list[Path] = []
+    if start is not None:
+        start_path = Path(start).resolve()
+        folder = start_path if start_path.is_dir() else start_path.parent
+        bound = _bound(folder)
+        if bound is None:
+            searched.append(f"nothing beside the input (no workspace, repository or package around {folder})")
+        else:
+            where = f"the input's {bound.kind} {bound.folder}"
+            own = list(_within(folder, bound.folder))
+            for anc in own:
+                # An installed package lives in <prefix>/share/<pkg>, indexed by its prefix.
+                found = _in_crawl(name, anc, _ANCESTOR_DEPTH) or _from_ament(name, [str(anc)])
+                if found:
+                    return _found(name, found, where)
+            searched.append(where)
     ros_path = [p for p in os.environ.get("ROS_PACKAGE_PATH", "").split(os.pathsep) if p]
     for root_str in ros_path:
         found = _in_crawl(name, Path(root_str), 8)
         if found:
-            return found
+            return _found(name, found, f"ROS_PACKAGE_PATH entry {root_str}")
     searched.append(f"ROS_PACKAGE_PATH ({':'.join(ros_path) or 'unset'})")
     ament = [p for p in os.environ.get("AMENT_PREFIX_PATH", "").split(os.pathsep) if p]
     found = _from_ament(name, ament)
     if found:
-        return found
+        return _found(name, found, f"AMENT_PREFIX_PATH prefix {found.parent.parent}")
     searched.append(f"AMENT_PREFIX_PATH ({':'.join(ament) or 'unset'})")
-    bases = [Path.cwd()]
-    if start_path is not None:
-        bases.extend(_ancestors(start_path))
-    found = _from_colcon(name, bases)
-    if found:
-        return found
+    colcon = _from_colcon(name, [*own, Path.cwd()])
+    if colcon:
+        return _found(name, colcon[0], f"colcon install tree {colcon[1]}")
     searched.append("colcon install/ trees")
     raise PackageNotFoundError(name, searched)

@@ -11,7 +11,7 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 
 from robotmodel.errors import PackageNotFoundError, ResourceError, UntrustedInputError, XacroError
-from robotmodel.resources import PathLike
+from robotmodel.resources import PathLike, record_package
 
 __all__ = ["DEFAULT_MEMORY_BYTES", "DEFAULT_TIMEOUT_S", "dependencies", "expand", "expand_string"]
 
@@ -138,7 +138,10 @@ def _run(
     error = None
     reply: dict[str, object] = {}
     for line in proc.stderr.splitlines():
-        if line.startswith('{"error"'):
+        if line.startswith('{"packages"'):
+            for name, folder, how in json.loads(line)["packages"]:
+                record_package(name, Path(folder), how)
+        elif line.startswith('{"error"'):
             reply = json.loads(line)
             error = str(reply["error"])
         elif line.strip():

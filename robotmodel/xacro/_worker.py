@@ -18,7 +18,7 @@ from pathlib import Path
 from typing import Any
 
 from robotmodel.errors import RobotModelError, UntrustedInputError
-from robotmodel.resources import find_package, resolve_uri
+from robotmodel.resources import find_package, resolve_uri, resolved_packages
 
 EXIT_ERROR = 3
 
@@ -226,14 +226,23 @@ def main() -> int:
         _install_hooks(req)
         out = _expand(req)
     except _Failure as exc:
+        _report_packages()
         reply = {"error": str(exc), "kind": exc.kind, "package": exc.package, "searched": exc.searched}
         sys.stderr.write(json.dumps(reply) + "\n")
         return EXIT_ERROR
     except MemoryError:
         sys.stderr.write(json.dumps({"error": "expansion exceeded the memory limit"}) + "\n")
         return EXIT_ERROR
+    _report_packages()
     sys.stdout.write(out)
     return 0
+
+
+def _report_packages() -> None:
+    """Tell the parent which copy of each package was used (for --verbose)."""
+    found = [[name, str(p.folder), p.how] for name, p in resolved_packages().items()]
+    if found:
+        sys.stderr.write(json.dumps({"packages": found}) + "\n")
 
 
 if __name__ == "__main__":

@@ -140,6 +140,7 @@ def test_unknown_package_names_package_and_places(tmp_path: Path, monkeypatch: p
 
 
 def test_both_find_entry_points_and_package_uri(tmp_path: Path) -> None:
+    (tmp_path / ".git").mkdir()  # a repository: its packages are searched beside the input
     pkg = _package(tmp_path / "pkg_x", "pkg_x")
     (pkg / "inc.xacro").write_text(
         f'<robot {XACRO_NS}><xacro:property name="v" value="7"/></robot>', encoding="utf-8")
