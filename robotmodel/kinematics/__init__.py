@@ -1,8 +1,10 @@
-"""Forward kinematics on Pinocchio, with robot_state_publisher's semantics.
+"""Forward kinematics with robot_state_publisher's semantics; Jacobians on Pinocchio.
 
-- :class:`KinematicModel`: immutable; joint names ↔ Pinocchio's ``q`` (through
-  ``idx_q``/``nq``), mimic chains resolved by us, limits and JSP-style defaults.
-- :class:`KinematicState`: mutable; link poses T_root_link and Jacobians for one configuration.
+- :class:`KinematicModel`: immutable, built from the typed description; joint names ↔
+  Pinocchio's ``q`` (through ``idx_q``/``nq``), mimic chains resolved by us, limits and
+  JSP-style defaults.
+- :class:`KinematicState`: mutable; link poses T_root_link (our own O(joints) FK, any
+  size) and Jacobians (Pinocchio, while its Data stays under :data:`PINOCCHIO_DATA_LIMIT`).
 - :func:`joint_transforms` / :func:`static_transforms`: per-joint T_parent_child as RSP publishes.
 - :func:`batch_link_matrices`: N configurations at once, vectorized.
 """
@@ -10,6 +12,7 @@
 from __future__ import annotations
 
 from robotmodel.kinematics._model import JointValues, KinematicModel, MimicRule
+from robotmodel.kinematics._pin import PINOCCHIO_DATA_LIMIT
 from robotmodel.kinematics._publish import (
     JointTransforms,
     batch_link_matrices,
@@ -20,6 +23,7 @@ from robotmodel.kinematics._publish import (
 from robotmodel.kinematics._state import KinematicState
 
 __all__ = [
+    "PINOCCHIO_DATA_LIMIT",
     "JointTransforms",
     "JointValues",
     "KinematicModel",

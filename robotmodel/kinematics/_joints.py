@@ -14,10 +14,22 @@ import numpy as np
 from robotmodel.model import JointType, RobotDescription
 from robotmodel.spatial import FloatArray, rpy_to_matrix
 
-__all__ = ["JointTable", "local_transforms"]
+__all__ = ["JointTable", "local_transforms", "unit_axis"]
 
 # Joint kinds in the tables; planar and floating count as fixed here, as robot_state_publisher does.
 KIND_FIXED, KIND_REVOLUTE, KIND_PRISMATIC = 0, 1, 2
+
+
+def unit_axis(axis: tuple[float, float, float]) -> FloatArray:
+    """``axis`` scaled to unit length, as KDL and Pinocchio use it (yourdfpy does not, for prismatic).
+
+    Divided by its largest component first, so neither a tiny axis (1e-300: its squared
+    norm underflows to 0) nor a huge one (1e300: overflows) loses its direction.
+    """
+    v = np.asarray(axis, dtype=np.float64)
+    v = v / np.max(np.abs(v))
+    unit: FloatArray = v / np.linalg.norm(v)
+    return unit
 
 
 @dataclass(frozen=True)
@@ -44,8 +56,7 @@ class JointTable:
             elif joint.type is JointType.PRISMATIC:
                 kinds[i] = KIND_PRISMATIC
             if kinds[i] != KIND_FIXED:
-                # Normalized as KDL and Pinocchio do (yourdfpy does not, for prismatic).
-                axes[i] = np.asarray(joint.axis) / np.linalg.norm(joint.axis)
+                axes[i] = unit_axis(joint.axis)
         return cls(
             names=tuple(j.name for j in joints),
             parents=tuple(j.parent for j in joints),

@@ -1,10 +1,13 @@
-"""The immutable kinematic model: joint-name mapping, mimic resolution and limits, over Pinocchio.
+"""The immutable kinematic model: joint-name mapping, mimic resolution and limits.
 
-Pinocchio stores a continuous joint as two configuration values (cos θ, sin θ) and a
-floating joint as seven, so names map to its ``q`` through each joint's ``idx_q`` and
-``nq``, never by list position. Mimic joints are computed here (value = multiplier ×
-master + offset, through chains, whatever the document order) instead of with
-Pinocchio's ``mimic=True``, which fails when a master comes later in the tree.
+Everything is built from the typed description (the single source of truth). Poses come
+from our own O(joints) tables; Pinocchio is built from the same description only when
+asked for (Jacobians, ``pin_model``). Pinocchio stores a continuous joint as two
+configuration values (cos θ, sin θ) and a floating joint as seven, so names map to its
+``q`` through each joint's ``idx_q`` and ``nq``, never by list position. Mimic joints are
+computed here (value = multiplier × master + offset, through chains, whatever the
+document order) instead of with Pinocchio's ``mimic=True``, which fails when a master
+comes later in the tree.
 """
 
 from __future__ import annotations
@@ -13,16 +16,17 @@ import math
 import os
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Any
 
 import numpy as np
 import numpy.typing as npt
-import pinocchio as pin
 
-from robotmodel.errors import JointValueError, KinematicsError
+from robotmodel.errors import JointValueError, KinematicsError, UnknownJointError
 from robotmodel.kinematics._fast import CycleTables, cross_matrix
-from robotmodel.kinematics._joints import JointTable
-from robotmodel.model import JointType, RobotDescription, load, to_urdf
+from robotmodel.kinematics._joints import KIND_FIXED, JointTable
+from robotmodel.kinematics._pin import PinocchioModel, free_or_planar, pinocchio_data_bytes
+from robotmodel.model import JointType, RobotDescription, load
 from robotmodel.spatial import FloatArray
 
 __all__ = ["JointValues", "KinematicModel", "MimicRule"]
@@ -50,11 +54,16 @@ def _resolve_mimics(desc: RobotDescription) -> dict[str, MimicRule]:
         if joint.mimic is None or joint.type not in _ONE_DOF or joint.mimic.joint not in by_name:
             continue
         multiplier, offset, master = 1.0, 0.0, joint
-        # Walk the chain to an independent joint, composing the affine maps.
-        while master.mimic is not None and master.mimic.joint in by_name:
+        # Walk the chain to an independent joint, composing the affine maps. Construction
+        # of the description rejected cycles; the bound keeps a bad one from looping.
+        for _ in range(len(by_name) + 1):
+            if master.mimic is None or master.mimic.joint not in by_name:
+                break
             multiplier, offset = (multiplier * master.mimic.multiplier,
                                   multiplier * master.mimic.offset + offset)
             master = by_name[master.mimic.joint]
+        else:
+            raise KinematicsError(f"mimic joints of robot '{desc.name}' form a cycle through [{joint.name}]")
         rules[joint.name] = MimicRule(joint.name, master.name, multiplier, offset)
     return rules
 
@@ -75,7 +84,8 @@ class _Cycle:
     joints: tuple[str, ...]
     parents: tuple[str, ...]
     children: tuple[str, ...]
-    expand_t: FloatArray
+    source: npt.NDArray[np.intp]
+    multiplier: FloatArray
     offset: FloatArray
     has_mimics: bool
     explicit_mimic: dict[str, int]
@@ -90,8 +100,9 @@ class _Cycle:
             joints=tuple(table.names[i] for i in rows),
             parents=tuple(table.parents[i] for i in rows),
             children=tuple(table.children[i] for i in rows),
-            expand_t=np.ascontiguousarray(model._expand[rows].T),
-            offset=model._expand_offset[rows],
+            source=model._source[rows],
+            multiplier=model._multiplier[rows],
+            offset=model._offset[rows],
             # Without mimics the rows are exactly the variables, in the same order.
             has_mimics=len(rows) != len(model.variables),
             explicit_mimic={table.names[i]: k for k, i in enumerate(rows) if table.names[i] in model.mimics},
@@ -108,11 +119,6 @@ class KinematicModel:
 
     def __init__(self, description: RobotDescription) -> None:
         self.description = description
-        urdf = to_urdf(description)
-        try:
-            self.pin_model: Any = pin.buildModelFromXML(urdf)
-        except (ValueError, RuntimeError) as exc:
-            raise KinematicsError(f"Pinocchio could not build robot '{description.name}': {exc}") from None
         self.root = description.root
         self.mimics = _resolve_mimics(description)
         self.variables: tuple[str, ...] = tuple(
@@ -122,15 +128,7 @@ class KinematicModel:
         self.table = JointTable.from_description(description)
         self._joint_index = {name: i for i, name in enumerate(self.table.names)}
         self._variable_index = {name: i for i, name in enumerate(self.variables)}
-        model = self.pin_model
-        self._pin_joint: dict[str, int] = {}
-        for joint in description.joints:
-            if joint.type is not JointType.FIXED:
-                jid = model.getJointId(joint.name)
-                if jid >= model.njoints:
-                    raise KinematicsError(f"joint [{joint.name}] is missing from Pinocchio's model")
-                self._pin_joint[joint.name] = jid
-        self._link_frames = [model.getFrameId(name, pin.BODY) for name in self.link_names]
+        self._types = {j.name: j.type for j in description.joints}
         lower, upper = [], []
         for name in self.variables:
             joint = description.joint(name)
@@ -140,16 +138,21 @@ class KinematicModel:
             upper.append(lim.upper if bounded and lim and lim.upper is not None else math.inf)
         self.lower: FloatArray = np.array(lower)
         self.upper: FloatArray = np.array(upper)
-        # Columns that map the independent variables onto every joint of the table.
-        self._expand = np.zeros((len(self.table.names), len(self.variables)))
-        self._expand_offset = np.zeros(len(self.table.names))
+        # Every joint's value is multiplier × variable[source] + offset: one gather, O(joints)
+        # memory (a dense joints × variables map is 72 MB on a 3,000-joint chain).
+        joints = len(self.table.names)
+        self._source = np.zeros(joints, dtype=np.intp)
+        self._multiplier = np.zeros(joints)
+        self._offset = np.zeros(joints)
         for name, i in self._variable_index.items():
-            self._expand[self._joint_index[name], i] = 1.0
+            self._source[self._joint_index[name]] = i
+            self._multiplier[self._joint_index[name]] = 1.0
         for rule in self.mimics.values():
             if rule.master in self._variable_index:
                 row = self._joint_index[rule.joint]
-                self._expand[row, self._variable_index[rule.master]] = rule.multiplier
-                self._expand_offset[row] = rule.offset
+                self._source[row] = self._variable_index[rule.master]
+                self._multiplier[row] = rule.multiplier
+                self._offset[row] = rule.offset
 
         self._cycle = _Cycle.build(self)
         self._link_index = {name: i for i, name in enumerate(self.link_names)}
@@ -161,6 +164,23 @@ class KinematicModel:
         self._cross = [cross_matrix(axis) for axis in self.table.axis]
         self._aligned: list[tuple[int, float] | None] = [_aligned_axis(axis) for axis in self.table.axis]
         self._origin_identity = [bool(np.array_equal(r, np.eye(3))) for r in self.table.origin_rotation]
+
+    @cached_property
+    def _pinocchio(self) -> PinocchioModel:
+        unit = {name: (float(a[0]), float(a[1]), float(a[2]))
+                for name, kind, a in zip(self.table.names, self.table.kinds, self.table.axis, strict=True)
+                if kind != KIND_FIXED}
+        return PinocchioModel(self.description, unit)
+
+    @property
+    def pin_model(self) -> Any:
+        """Pinocchio's model of the description, built on first use."""
+        return self._pinocchio.model
+
+    @property
+    def pinocchio_data_bytes(self) -> int:
+        """Estimated size of Pinocchio's Data for this robot (see ``PINOCCHIO_DATA_LIMIT``)."""
+        return pinocchio_data_bytes(self.description)
 
     @classmethod
     def load(cls, source: str | os.PathLike[str], args: Mapping[str, str] | None = None) -> KinematicModel:
@@ -193,14 +213,18 @@ class KinematicModel:
             for name, value in (positions or {}).items():
                 if name in self._variable_index:
                     q[self._variable_index[name]] = self._scalar(name, value)
-                elif name in self.mimics or name in self._pin_joint or name in self._joint_index:
+                elif name in self._joint_index:
                     continue  # mimic, floating, planar and fixed joints are handled elsewhere
                 else:
-                    raise JointValueError(
+                    raise UnknownJointError(
                         f"unknown joint '{name}' for robot '{self.description.name}' "
                         f"(its joints: {', '.join(self.variables)})", name)
         else:
-            q = np.asarray(positions, dtype=np.float64).reshape(-1)
+            try:
+                q = np.asarray(positions, dtype=np.float64).reshape(-1)
+            except (TypeError, ValueError):
+                raise JointValueError(f"expected {self.nv} joint values ({', '.join(self.variables)}), "
+                                      f"got {positions!r}") from None
             if q.shape[0] != self.nv:
                 raise JointValueError(f"expected {self.nv} joint values ({', '.join(self.variables)}), "
                                       f"got {q.shape[0]}")
@@ -235,37 +259,29 @@ class KinematicModel:
 
     def joint_values(self, q: npt.ArrayLike) -> FloatArray:
         """Every joint's value (document order, mimics computed) from variable vectors ``(..., nv)``."""
-        return np.asarray(q, dtype=np.float64) @ self._expand.T + self._expand_offset
+        values = np.asarray(q, dtype=np.float64)
+        if self.nv == 0:
+            return np.broadcast_to(self._offset, (*values.shape[:-1], len(self._offset))).copy()
+        out: FloatArray = values[..., self._source] * self._multiplier + self._offset
+        return out
+
+    def configuration(self, q: FloatArray, extra: JointValues | None = None
+                      ) -> tuple[FloatArray, dict[str, FloatArray]]:
+        """Every joint's value from variable vector ``q`` and the floating/planar values in ``extra``.
+
+        An explicit mimic value in ``extra`` wins over its master's, as in RSP.
+        """
+        values = self.joint_values(q)
+        free: dict[str, FloatArray] = {}
+        for name, value in (extra or {}).items():
+            jtype = self._types.get(name)
+            if jtype is JointType.FLOATING or jtype is JointType.PLANAR:
+                free[name] = free_or_planar(name, jtype, value)
+            elif name in self.mimics:
+                values[self._joint_index[name]] = self._scalar(name, value)
+        return values, free
 
     def pin_configuration(self, q: FloatArray, extra: JointValues | None = None) -> FloatArray:
         """Pinocchio's ``q`` for variable vector ``q`` (floating/planar values from ``extra``)."""
-        model = self.pin_model
-        config: FloatArray = pin.neutral(model)
-        values = self.joint_values(q)
-        for name, jid in self._pin_joint.items():
-            idx, nq = model.idx_qs[jid], model.nqs[jid]
-            jtype = self.description.joint(name).type
-            if jtype in _ONE_DOF:
-                value = values[self._joint_index[name]]
-                if extra and name in extra and name in self.mimics:
-                    value = self._scalar(name, extra[name])  # an explicit mimic value wins, as in RSP
-                if nq == 2:
-                    config[idx], config[idx + 1] = math.cos(value), math.sin(value)
-                else:
-                    config[idx] = value
-            elif extra and name in extra:
-                config[idx:idx + nq] = self._free_or_planar(name, jtype, extra[name])
-        return config
-
-    def _free_or_planar(self, name: str, jtype: JointType, value: float | Sequence[float]) -> FloatArray:
-        v = np.asarray(value, dtype=np.float64).reshape(-1)
-        want = 7 if jtype is JointType.FLOATING else 3
-        if v.shape[0] != want or not np.all(np.isfinite(v)):
-            form = "x y z qx qy qz qw" if want == 7 else "x y theta"
-            raise JointValueError(f"joint '{name}' ({jtype.value}) takes {want} finite numbers: {form}", name)
-        if want == 7:
-            norm = np.linalg.norm(v[3:])
-            if norm == 0.0:
-                raise JointValueError(f"joint '{name}': zero quaternion", name)
-            return np.concatenate([v[:3], v[3:] / norm])
-        return np.array([v[0], v[1], math.cos(v[2]), math.sin(v[2])])
+        values, free = self.configuration(q, extra)
+        return self._pinocchio.configuration(values, self._types, self._joint_index, free)

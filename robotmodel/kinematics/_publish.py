@@ -8,10 +8,11 @@ from typing import NamedTuple
 import numpy as np
 import numpy.typing as npt
 
+from robotmodel.errors import JointValueError
 from robotmodel.kinematics._joints import KIND_FIXED, KIND_PRISMATIC, KIND_REVOLUTE, local_transforms
 from robotmodel.kinematics._model import KinematicModel
 from robotmodel.model import JointType
-from robotmodel.spatial import FloatArray, matrix_to_quat
+from robotmodel.spatial import FloatArray, matrix_to_quat, quats_canonical
 
 __all__ = [
     "JointTransforms", "batch_link_matrices", "batch_link_poses", "joint_transforms", "static_transforms",
@@ -48,7 +49,8 @@ def _select(model: KinematicModel, rows: list[int], values: FloatArray) -> Joint
         axis=table.axis[idx],
     )
     rotation, translation = local_transforms(sub, values[idx])
-    return JointTransforms(sub.names, sub.parents, sub.children, translation, matrix_to_quat(rotation))
+    return JointTransforms(sub.names, sub.parents, sub.children, translation,
+                           quats_canonical(matrix_to_quat(rotation)))
 
 
 def static_transforms(model: KinematicModel) -> JointTransforms:
@@ -73,13 +75,15 @@ def joint_transforms(model: KinematicModel, positions: Mapping[str, float]) -> J
     except KeyError:
         complete = False
     if complete:
-        full = values @ cycle.expand_t + cycle.offset if cycle.has_mimics else values
+        full = values[cycle.source] * cycle.multiplier + cycle.offset if cycle.has_mimics else values
         if cycle.has_mimics and len(positions) > len(values):
             for name, row in cycle.explicit_mimic.items():
                 if name in positions:
                     full[row] = positions[name]
         translations, rotations = cycle.tables.evaluate(full)
-        return JointTransforms(cycle.joints, cycle.parents, cycle.children, translations, rotations)
+        # The quaternion (P·sin + Q·cos) has either sign; tf2's is the one every path gives.
+        return JointTransforms(cycle.joints, cycle.parents, cycle.children, translations,
+                               quats_canonical(rotations))
     index = model._joint_index
     table = model.table
     all_values = np.zeros(len(table.names))
@@ -107,9 +111,14 @@ def batch_link_poses(model: KinematicModel, q: npt.ArrayLike) -> tuple[FloatArra
     Floating and planar joints stay at their origin. Values are not limit-checked here;
     validate with :meth:`KinematicModel.vector` where they come from users.
     """
-    configs = np.asarray(q, dtype=np.float64)
+    try:
+        configs = np.asarray(q, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise JointValueError(f"expected {model.nv} joint values per configuration, an (N, {model.nv}) "
+                              "array of numbers") from None
     if configs.ndim != 2 or configs.shape[1] != model.nv:
-        raise ValueError(f"expected an (N, {model.nv}) array of joint values, got shape {configs.shape}")
+        raise JointValueError(f"expected {model.nv} joint values per configuration, an (N, {model.nv}) "
+                              f"array; got shape {configs.shape}")
     n = configs.shape[0]
     rotations = np.empty((len(model.link_names), n, 3, 3))
     translations = np.empty((len(model.link_names), n, 3))

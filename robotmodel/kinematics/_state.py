@@ -1,4 +1,10 @@
-"""Mutable evaluation state (Pinocchio's ``data``): link poses and Jacobians for one configuration."""
+"""Mutable evaluation state: link poses and Jacobians for one configuration.
+
+Poses come from our own O(joints) composition (``_single``), so any robot the
+description accepts is served in bounded memory. Jacobians use Pinocchio, whose ``Data``
+is created on the first Jacobian and only when its size is reasonable (see
+:data:`robotmodel.kinematics.PINOCCHIO_DATA_LIMIT`).
+"""
 
 from __future__ import annotations
 
@@ -6,19 +12,16 @@ from typing import Any, Literal
 
 import numpy as np
 import numpy.typing as npt
-import pinocchio as pin
 
-from robotmodel.errors import KinematicsError
+from robotmodel.errors import KinematicsError, UnknownLinkError
 from robotmodel.kinematics._model import JointValues, KinematicModel
+from robotmodel.kinematics._single import compose_tree, free_motion
+from robotmodel.model import JointType
 from robotmodel.spatial import FloatArray, Transform
 
 __all__ = ["KinematicState"]
 
-_REFERENCE = {
-    "local_world_aligned": pin.LOCAL_WORLD_ALIGNED,
-    "world": pin.WORLD,
-    "local": pin.LOCAL,
-}
+_REFERENCES = ("local_world_aligned", "world", "local")
 
 
 class KinematicState:
@@ -29,9 +32,16 @@ class KinematicState:
 
     def __init__(self, model: KinematicModel) -> None:
         self.model = model
-        self.data: Any = model.pin_model.createData()
+        self._data: Any = None
         self.q: FloatArray = model.vector()
         self.update(self.q)
+
+    @property
+    def data(self) -> Any:
+        """Pinocchio's ``Data`` for this state, created on first use (KinematicsError above the limit)."""
+        if self._data is None:
+            self._data = self.model._pinocchio.create_data()
+        return self._data
 
     def update(
         self, positions: JointValues | npt.ArrayLike | None = None, *, clamp: bool = False,
@@ -42,24 +52,31 @@ class KinematicState:
         Floating joints take ``x y z qx qy qz qw`` and planar ``x y θ``, by name in
         ``extra`` (or in ``positions`` when it is a mapping).
         """
-        self.q = self.model.vector(positions, clamp=clamp)
+        model = self.model
+        q = model.vector(positions, clamp=clamp)
         if extra is None and isinstance(positions, dict):
             extra = positions
-        self._config = self.model.pin_configuration(self.q, extra)
-        pin.framesForwardKinematics(self.model.pin_model, self.data, self._config)
+        values, free = model.configuration(q, extra)
+        motions = {model._joint_index[name]: free_motion(model._types[name] is JointType.FLOATING, v)
+                   for name, v in free.items()}
+        self._rotations, self._translations = compose_tree(
+            model.table, values, motions, model._walk_rows, model._link_index[model.root], len(model.link_names))
+        self.q, self._extra = q, extra
         return self
 
-    def _frame(self, link: str) -> int:
-        try:
-            frame: int = self.model._link_frames[self.model.link_names.index(link)]
-        except ValueError:
-            raise KinematicsError(f"robot '{self.model.description.name}' has no link '{link}'") from None
-        return frame
+    def _link(self, link: str) -> int:
+        index = self.model._link_index.get(link)
+        if index is None:
+            raise UnknownLinkError(self.model.description.name, link)
+        return index
 
     def link_matrix(self, link: str) -> FloatArray:
         """4x4 T_root_link."""
-        result: FloatArray = self.data.oMf[self._frame(link)].homogeneous
-        return result
+        i = self._link(link)
+        out = np.eye(4)
+        out[:3, :3] = self._rotations[i]
+        out[:3, 3] = self._translations[i]
+        return out
 
     def link_pose(self, link: str) -> Transform:
         """T_root_link as translation + quaternion (x, y, z, w)."""
@@ -67,8 +84,11 @@ class KinematicState:
 
     def link_matrices(self) -> FloatArray:
         """``(L, 4, 4)`` T_root_link for every link in ``model.link_names`` order."""
-        poses = self.data.oMf
-        return np.stack([poses[f].homogeneous for f in self.model._link_frames])
+        out = np.zeros((len(self._rotations), 4, 4))
+        out[:, :3, :3] = self._rotations
+        out[:, :3, 3] = self._translations
+        out[:, 3, 3] = 1.0
+        return out
 
     def link_poses(self) -> dict[str, Transform]:
         """T_root_link of every link, by name."""
@@ -82,17 +102,29 @@ class KinematicState:
 
         ``local_world_aligned`` (default): velocity of the link origin, axes of the root
         frame; ``world``: spatial velocity at the root origin; ``local``: link axes.
-        Mimic joints' columns are folded into their masters (chain rule).
+        Mimic joints' columns are folded into their masters (chain rule). Uses Pinocchio:
+        raises :class:`~robotmodel.errors.KinematicsError` when its Data would exceed
+        ``PINOCCHIO_DATA_LIMIT``.
         """
+        self._link(link)
+        if reference not in _REFERENCES:
+            raise KinematicsError(f"reference must be one of {', '.join(_REFERENCES)}, not {reference!r}")
+        import pinocchio as pin
+
         model = self.model
-        full = pin.computeFrameJacobian(model.pin_model, self.data, self._config, self._frame(link),
-                                        _REFERENCE[reference])
+        pinocchio = model._pinocchio
+        data = self.data
+        config = model.pin_configuration(self.q, self._extra)
+        frame = {"local_world_aligned": pin.LOCAL_WORLD_ALIGNED, "world": pin.WORLD, "local": pin.LOCAL}[reference]
+        # Pinocchio hands a 6x1 Jacobian back as a flat array.
+        full = np.asarray(pin.computeFrameJacobian(pinocchio.model, data, config, pinocchio.link_frames[link],
+                                                   frame)).reshape(6, -1)
         out = np.zeros((6, model.nv))
-        pm = model.pin_model
-        for name, jid in model._pin_joint.items():
-            col = pm.idx_vs[jid]
+        pm = pinocchio.model
+        for name, jid in pinocchio.joint_ids.items():
             if pm.nvs[jid] != 1:
                 continue
             j = model._joint_index[name]
-            out += np.outer(full[:, col], model._expand[j])
+            if model._multiplier[j] != 0.0:
+                out[:, model._source[j]] += full[:, pm.idx_vs[jid]] * model._multiplier[j]
         return out

@@ -1,0 +1,53 @@
+"""Forward kinematics of one configuration in O(joints) time and memory, without Pinocchio.
+
+Every joint's local transform comes from the same tables as robot_state_publisher's and
+batch FK (``_joints.local_transforms``); they are composed parents-first along the tree.
+Floating joints take ``x y z qx qy qz qw`` and planar joints ``x y θ`` (a translation in
+the joint's xy plane, then a turn about its z axis), as Pinocchio reads them.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+
+import numpy as np
+
+from robotmodel.kinematics._joints import JointTable, local_transforms
+from robotmodel.spatial import FloatArray, quat_to_matrix
+
+__all__ = ["compose_tree", "free_motion"]
+
+
+def free_motion(floating: bool, value: FloatArray) -> tuple[FloatArray, FloatArray]:
+    """Rotation and translation of a floating (7 values) or planar (3 values) joint's motion."""
+    if floating:
+        return quat_to_matrix(value[3:]), np.asarray(value[:3], dtype=np.float64)
+    c, s = math.cos(value[2]), math.sin(value[2])
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]]), np.array([value[0], value[1], 0.0])
+
+
+def compose_tree(
+    table: JointTable, values: FloatArray, free: dict[int, tuple[FloatArray, FloatArray]],
+    walk: Iterable[tuple[int, int, int]], root: int, n_links: int,
+) -> tuple[FloatArray, FloatArray]:
+    """T_root_link of every link: rotations ``(L, 3, 3)`` and translations ``(L, 3)``.
+
+    ``values`` holds every joint's value (table order); ``free`` the motion of floating
+    and planar joints by table row; ``walk`` lists (joint row, parent link, child link)
+    parents first.
+    """
+    local_r, local_t = local_transforms(table, values)
+    for row, (r, t) in free.items():
+        origin = table.origin_rotation[row]
+        local_r[row] = origin @ r
+        local_t[row] = table.origin_translation[row] + origin @ t
+    rotations = np.empty((n_links, 3, 3))
+    translations = np.empty((n_links, 3))
+    rotations[root] = np.eye(3)
+    translations[root] = 0.0
+    for row, parent, child in walk:
+        r_parent = rotations[parent]
+        np.matmul(r_parent, local_r[row], out=rotations[child])
+        np.add(r_parent @ local_t[row], translations[parent], out=translations[child])
+    return rotations, translations
