@@ -21,7 +21,7 @@ caller (and the CLI) can catch one class and print one line. The tree::
     └── TransformException          tf2's root (see robotmodel.tf)
         ├── LookupException
         ├── ConnectivityException
-        ├── ExtrapolationException
+        ├── ExtrapolationException  (.direction: ExtrapolationDirection forward/backward/no data)
         ├── InvalidArgumentException
         └── TimeoutException
 
@@ -31,9 +31,13 @@ frame. The TF classes carry structured fields as well as tf2's text.
 
 from __future__ import annotations
 
+import enum
+from typing import Any
+
 __all__ = [
     "BusError",
     "ConnectivityException",
+    "ExtrapolationDirection",
     "ExtrapolationException",
     "InvalidArgumentException",
     "JointValueError",
@@ -162,8 +166,24 @@ class ConnectivityException(TransformException):
     """The frames exist but are not connected in one tree."""
 
 
+class ExtrapolationDirection(enum.Enum):
+    """Which of tf2's extrapolation cases an :class:`ExtrapolationException` reports.
+
+    tf2 (Iron and later) raises Forward-, Backward- and NoDataForExtrapolationException;
+    tf2_py surfaces all three as ExtrapolationException, so the case travels here.
+    """
+
+    FORWARD = "forward"  #: "Lookup would require extrapolation into the future. ..."
+    BACKWARD = "backward"  #: "Lookup would require extrapolation into the past. ..."
+    NO_DATA = "no_data"  #: "Lookup would require extrapolation at time ..., but only time ... is in the buffer"
+
+
 class ExtrapolationException(TransformException):
-    """The requested time is outside the buffered data."""
+    """The requested time is outside the buffered data; ``direction`` says which way."""
+
+    def __init__(self, message: str, *, direction: ExtrapolationDirection | None = None, **context: Any) -> None:
+        super().__init__(message, **context)
+        self.direction = direction
 
 
 class InvalidArgumentException(TransformException):

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 from robotmodel.errors import (
     ConnectivityException,
+    ExtrapolationDirection,
     ExtrapolationException,
     InvalidArgumentException,
     LookupException,
@@ -44,6 +45,7 @@ __all__ = [
     "BufferCore",
     "ConnectivityException",
     "Duration",
+    "ExtrapolationDirection",
     "ExtrapolationException",
     "Header",
     "InvalidArgumentException",

@@ -1,20 +1,23 @@
 """tf2_ros.Buffer's Python API over :class:`BufferCore`, with real waiting.
 
 Unlike tf2_ros's Python buffer, which polls every 20 ms and never raises
-TimeoutException, a lookup with a timeout here sleeps on the buffer's condition
-variable, wakes on every accepted insert, and raises :class:`TimeoutException` (with the
-last reason) when the timeout expires.
+TimeoutException, a lookup with a timeout here sleeps until an insert touches a frame
+the lookup depends on, and raises :class:`TimeoutException` (with the last reason) when
+the timeout expires. Every failure of this API is a tf2 exception (TransformException),
+invalid times and frame ids included, and ``can_transform`` always answers a bool.
 """
 
 from __future__ import annotations
 
+import threading
 import time
+from collections.abc import Callable
 from typing import Any, TypeVar
 
 import numpy as np
 import numpy.typing as npt
 
-from robotmodel.errors import TimeoutException, TransformException
+from robotmodel.errors import InvalidArgumentException, TimeoutException, TransformException
 from robotmodel.msgs import (
     Header,
     PointStamped,
@@ -27,6 +30,7 @@ from robotmodel.msgs import (
     stamp,
 )
 from robotmodel.spatial import Pose7, pose_compose
+from robotmodel.tf._checks import checked_stamps, time_arg_ns
 from robotmodel.tf._core import BufferCore
 from robotmodel.tf._vector import lookup_many
 from robotmodel.time import Duration, Time, to_nanoseconds
@@ -44,30 +48,54 @@ def _message(pose: Pose7, stamp_ns: int, target: str, source: str) -> TransformS
     )
 
 
+def _timeout_ns(timeout: Any) -> int:
+    try:
+        return to_nanoseconds(timeout)
+    except (TypeError, ValueError, OverflowError, AttributeError):
+        raise InvalidArgumentException(
+            f'Invalid argument "{timeout}" passed to timeout - duration must have sec and nanosec, '
+            "or nanoseconds.") from None
+
+
 def _pose7(msg: TransformStamped) -> Pose7:
     t, r = msg.transform.translation, msg.transform.rotation
     return (t.x, t.y, t.z, r.x, r.y, r.z, r.w)
 
 
 class Buffer(BufferCore):
-    """A tf2_ros-style transform buffer: ``Buffer(cache_time=Duration(seconds=10))``."""
+    """A tf2_ros-style transform buffer: ``Buffer(cache_time=Duration(seconds=10))``.
 
-    def __init__(self, cache_time: Duration | None = None) -> None:
-        super().__init__(to_nanoseconds(cache_time) if cache_time is not None else 10_000_000_000)
+    ``unbounded=True`` keeps every sample of every frame (offline use, e.g. a whole
+    recording): nothing is pruned and nothing is too old; ``cache_time`` is then unused.
+    """
+
+    def __init__(self, cache_time: Duration | None = None, *, unbounded: bool = False) -> None:
+        window = None if unbounded else (time_arg_ns(cache_time, "Buffer argument cache_time")
+                                         if cache_time is not None else 10_000_000_000)
+        super().__init__(window)
 
     def set_transform_static(self, transform: TransformStamped, authority: str) -> bool:
         """Insert a static transform, valid at all times."""
         return super().set_transform(transform, authority, True)
 
-    def _wait(self, attempt: Any, timeout: Any, what: str) -> Any:
-        timeout_ns = to_nanoseconds(timeout) if timeout is not None else 0
+    def _wait(self, attempt: Callable[[], Any], timeout: Any, what: str, ends: list[tuple[str, int]]) -> Any:
+        """``attempt()``, retried until it succeeds or ``timeout`` expires.
+
+        Between attempts the thread sleeps until an insert touches one of the frames the
+        lookup depends on (as tf2's transformable requests), not on every insert.
+        """
+        if timeout is None:
+            return attempt()
+        timeout_ns = _timeout_ns(timeout)
         if timeout_ns <= 0:
             return attempt()
         deadline = time.monotonic() + timeout_ns / 1e9
-        with self._cond:
+        with self._lock:
             while True:
                 try:
                     return attempt()
+                except InvalidArgumentException:
+                    raise  # waiting cannot fix the arguments
                 except TransformException as exc:
                     remaining = deadline - time.monotonic()
                     if remaining <= 0:
@@ -76,34 +104,54 @@ class Buffer(BufferCore):
                             target_frame=exc.target_frame, source_frame=exc.source_frame,
                             time_ns=exc.time_ns, earliest_ns=exc.earliest_ns, latest_ns=exc.latest_ns,
                         ) from exc
-                    self._waiting += 1
-                    try:
-                        self._cond.wait(remaining)
-                    finally:
-                        self._waiting -= 1
+                    self._sleep_until_touched(self._dependencies(ends), remaining)
+
+    def _sleep_until_touched(self, frames: set[str], seconds: float) -> None:
+        cond = threading.Condition(self._lock)
+        for name in frames:
+            self._waiters.setdefault(name, []).append(cond)
+        try:
+            cond.wait(seconds)
+        finally:
+            for name in frames:
+                waiting = self._waiters[name]
+                waiting.remove(cond)
+                if not waiting:
+                    del self._waiters[name]
 
     def lookup_transform(self, target_frame: str, source_frame: str, time: Any,
                          timeout: Any = None) -> TransformStamped:
         """The pose of ``source_frame`` in ``target_frame`` at ``time`` (``Time()`` = latest)."""
-        t = to_nanoseconds(time)
-        pose, stamp = self._wait(lambda: self.lookup_ns(target_frame, source_frame, t), timeout,
-                                 f"from [{source_frame}] to [{target_frame}]")
-        return _message(pose, stamp, target_frame, source_frame)
+        t = time_arg_ns(time, "lookupTransform argument time")
+        if timeout is None:
+            pose, stamp_ns = self.lookup_ns(target_frame, source_frame, t)
+        else:
+            pose, stamp_ns = self._wait(lambda: self.lookup_ns(target_frame, source_frame, t), timeout,
+                                        f"from [{source_frame}] to [{target_frame}]",
+                                        [(target_frame, t), (source_frame, t)])
+        return _message(pose, stamp_ns, target_frame, source_frame)
 
     def lookup_transform_full(self, target_frame: str, target_time: Any, source_frame: str,
                               source_time: Any, fixed_frame: str, timeout: Any = None) -> TransformStamped:
         """Source at ``source_time`` in target at ``target_time``, through a frame fixed over time."""
-        tt, st = to_nanoseconds(target_time), to_nanoseconds(source_time)
-        pose, stamp = self._wait(
+        tt = time_arg_ns(target_time, "lookupTransform argument target_time")
+        st = time_arg_ns(source_time, "lookupTransform argument source_time")
+        pose, stamp_ns = self._wait(
             lambda: self.lookup_full_ns(target_frame, tt, source_frame, st, fixed_frame), timeout,
-            f"from [{source_frame}] to [{target_frame}] via [{fixed_frame}]")
-        return _message(pose, stamp, target_frame, source_frame)
+            f"from [{source_frame}] to [{target_frame}] via [{fixed_frame}]",
+            [(target_frame, tt), (fixed_frame, tt), (fixed_frame, st), (source_frame, st)])
+        return _message(pose, stamp_ns, target_frame, source_frame)
 
     def can_transform(self, target_frame: str, source_frame: str, time: Any, timeout: Any = None,
                       return_debug_tuple: bool = False) -> bool | tuple[bool, str]:
-        """Whether the lookup would succeed (waiting up to ``timeout``); with the reason on request."""
+        """Whether the lookup would succeed (waiting up to ``timeout``); with the reason on request.
+
+        Always a bool (or the tuple): any failure, invalid arguments included, is False.
+        """
         try:
-            self.lookup_transform(target_frame, source_frame, time, timeout)
+            t = time_arg_ns(time, "canTransform argument time")
+            self._wait(lambda: self.lookup_ns(target_frame, source_frame, t), timeout,
+                       f"from [{source_frame}] to [{target_frame}]", [(target_frame, t), (source_frame, t)])
         except TransformException as exc:
             return (False, str(exc)) if return_debug_tuple else False
         return (True, "") if return_debug_tuple else True
@@ -121,7 +169,7 @@ class Buffer(BufferCore):
 
     def get_latest_common_time(self, target_frame: str, source_frame: str) -> Time:
         """The newest time at which the whole chain from source to target has data."""
-        with self._cond:
+        with self._lock:
             target_id = self._validate(target_frame, "get_latest_common_time")
             source_id = self._validate(source_frame, "get_latest_common_time")
             return Time(nanoseconds=self._latest_common_time(target_id, source_id, target_frame, source_frame))
@@ -131,7 +179,8 @@ class Buffer(BufferCore):
         header = object_stamped.header
         msg = self.lookup_transform(target_frame, header.frame_id, header.stamp, timeout)
         t_target_source: Pose7 = _pose7(msg)
-        new_header = Header(stamp=stamp(to_nanoseconds(header.stamp)), frame_id=target_frame)
+        new_header = Header(stamp=stamp(time_arg_ns(header.stamp, "transform argument header.stamp")),
+                            frame_id=target_frame)
         if isinstance(object_stamped, PointStamped):
             pt = object_stamped.point
             x, y, z = pose_compose(t_target_source, (pt.x, pt.y, pt.z, 0.0, 0.0, 0.0, 1.0))[:3]
@@ -159,6 +208,6 @@ class Buffer(BufferCore):
         Returns translations ``(N, 3)`` and quaternions ``(N, 4)`` (x, y, z, w), with the same
         semantics and errors as N calls of :meth:`lookup_transform`.
         """
-        stamps = np.asarray(times, dtype=np.int64).reshape(-1)
-        with self._cond:
+        stamps = checked_stamps(times, "lookup_transforms argument times")
+        with self._lock:
             return lookup_many(self, target_frame, source_frame, stamps)

@@ -1,16 +1,33 @@
-"""Per-child-frame storage: tf2's TimeCache (time window, no extrapolation) and StaticCache."""
+"""Per-child-frame storage: tf2's TimeCache (time window, no extrapolation) and StaticCache.
+
+A TimeCache keeps its samples in preallocated arrays, ascending by stamp: stamps
+(int64 ns), poses ((n, 7) float64: x, y, z, qx, qy, qz, qw) and parent ids (int32),
+68 bytes a sample plus at most 1/8 spare capacity. The live samples are the slice
+``[start, end)``: pruning only moves ``start``, appending only moves ``end``, and the
+arrays are compacted or regrown when ``end`` reaches the capacity, which costs
+amortized O(1) per insert at any window length. Scalar code reads and writes through
+memoryviews (no NumPy call per sample); vectorized lookups get zero-copy NumPy views.
+"""
 
 from __future__ import annotations
 
-from bisect import bisect_right
+import struct
+from bisect import bisect_left, bisect_right
 from dataclasses import dataclass
-from typing import Any
 
+import numpy as np
+import numpy.typing as npt
+
+from robotmodel.errors import ExtrapolationDirection
 from robotmodel.spatial import Pose7, pose_interpolate
 
 __all__ = ["CacheMiss", "StaticCache", "TimeCache", "format_time"]
 
-NO_DATA, FORWARD, BACKWARD = "no_data", "forward", "backward"
+_POSE = struct.Struct("7d")
+_unpack = _POSE.unpack_from
+_pack = _POSE.pack_into
+_ROW = _POSE.size
+_MIN_SPARE = 16
 
 
 def format_time(ns: int) -> str:
@@ -20,141 +37,259 @@ def format_time(ns: int) -> str:
 
 @dataclass(frozen=True, slots=True)
 class CacheMiss:
-    """Why a cache could not give data at a time (tf2's texts)."""
+    """Why a cache could not give data at a time (tf2's texts and case)."""
 
-    kind: str
+    direction: ExtrapolationDirection
     message: str
     earliest_ns: int
     latest_ns: int
 
 
+def _no_data(t: int, only: int) -> CacheMiss:
+    return CacheMiss(ExtrapolationDirection.NO_DATA, f"Lookup would require extrapolation at time {format_time(t)}, "
+                     f"but only time {format_time(only)} is in the buffer", only, only)
+
+
 class TimeCache:
-    """Samples of one child frame, ascending by stamp; each sample carries its parent id."""
+    """Samples of one child frame within a time window (``None``: unbounded, never pruned)."""
 
-    __slots__ = ("data", "parents", "snap", "stamps", "version", "window")
+    __slots__ = (
+        "_cap",
+        "_end",
+        "_newest",
+        "_oldest",
+        "_parents",
+        "_pmv",
+        "_poses",
+        "_qmv",
+        "_smv",
+        "_stamps",
+        "_start",
+        "window",
+    )
 
-    def __init__(self, window_ns: int) -> None:
+    _stamps: npt.NDArray[np.int64]
+    _poses: npt.NDArray[np.float64]
+    _parents: npt.NDArray[np.int32]
+    _smv: memoryview
+    _pmv: memoryview
+    _qmv: memoryview
+
+    def __init__(self, window_ns: int | None) -> None:
         self.window = window_ns
-        self.stamps: list[int] = []
-        self.data: list[Pose7] = []
-        self.parents: list[int] = []
-        self.version = 0
-        # NumPy copy for vectorized lookups, rebuilt when ``version`` moves on.
-        self.snap: tuple[int, Any, Any, Any] | None = None
+        self._start = self._end = 0
+        self._newest = self._oldest = 0  # stamps at end - 1 and start, valid when not empty
+        self._allocate(_MIN_SPARE)
 
+    # ----------------------------------------------------------------- storage
+    def _allocate(self, cap: int) -> None:
+        live = self._end - self._start
+        stamps = np.empty(cap, dtype=np.int64)
+        poses = np.empty((cap, 7), dtype=np.float64)
+        parents = np.empty(cap, dtype=np.int32)
+        if live:
+            stamps[:live] = self._stamps[self._start:self._end]
+            poses[:live] = self._poses[self._start:self._end]
+            parents[:live] = self._parents[self._start:self._end]
+        self._stamps, self._poses, self._parents = stamps, poses, parents
+        self._smv = stamps.data
+        self._pmv = poses.data.cast("B")
+        self._qmv = parents.data
+        self._cap = cap
+        self._start, self._end = 0, live
+
+    def _make_room(self, extra: int) -> None:
+        """Ensure ``end + extra <= cap``: compact in place when enough was pruned, else regrow."""
+        start, end = self._start, self._end
+        live = end - start
+        need = live + extra
+        if start and need <= self._cap and start >= live >> 3 and self._cap <= 4 * need + 64:
+            self._stamps[:live] = self._stamps[start:end]
+            self._poses[:live] = self._poses[start:end]
+            self._parents[:live] = self._parents[start:end]
+            self._start, self._end = 0, live
+        else:
+            self._allocate(need + max(need >> 3, _MIN_SPARE))
+
+    def _prune(self, limit: int) -> None:
+        """Drop samples older than ``limit`` (there is at least one, and the newest stays)."""
+        smv, k, end = self._smv, self._start + 1, self._end
+        if k < end and smv[k] < limit:  # more than one to drop: binary search the rest
+            k = bisect_left(smv, limit, k + 1, end)
+        self._start = k
+        self._oldest = smv[k]
+
+    # ------------------------------------------------------------------ insert
     def insert(self, stamp: int, pose: Pose7, parent: int) -> bool:
-        """Insert a sample; False when it is older than the window (TF_OLD_DATA)."""
-        stamps = self.stamps
-        if stamps:
-            latest = stamps[-1]
-            # Prune with the newest stamp before this insert, as tf2 does (lazy by one).
-            cut = 0
+        """Insert a sample as tf2 does; False when it is older than the window (TF_OLD_DATA)."""
+        start, end = self._start, self._end
+        if end == start:
+            self._smv[0] = stamp
+            _pack(self._pmv, 0, *pose)
+            self._qmv[0] = parent
+            self._start, self._end = 0, 1
+            self._newest = self._oldest = stamp
+            return True
+        latest = self._newest
+        if self.window is not None:
+            # Prune with the newest stamp before this insert, as tf2 does (lazy by one insert).
             limit = latest - self.window
-            while cut < len(stamps) and stamps[cut] < limit:
-                cut += 1
-            if cut:
-                del stamps[:cut], self.data[:cut], self.parents[:cut]
-                self.version += 1
+            if self._oldest < limit:
+                self._prune(limit)
             if stamp < limit:
                 return False
-            if stamp >= latest:
-                if stamp == latest and self._duplicate(stamp, pose, parent):
-                    return True
-                stamps.append(stamp)
-                self.data.append(pose)
-                self.parents.append(parent)
-                self.version += 1
-                return True
-        if self._duplicate(stamp, pose, parent):
+        if stamp > latest:
+            if end == self._cap:
+                self._make_room(1)
+                end = self._end
+            self._smv[end] = stamp
+            _pack(self._pmv, end * _ROW, *pose)
+            self._qmv[end] = parent
+            self._end = end + 1
+            self._newest = stamp
             return True
-        at = bisect_right(stamps, stamp)
-        stamps.insert(at, stamp)
-        self.data.insert(at, pose)
-        self.parents.insert(at, parent)
-        self.version += 1
+        return self._insert_at_or_before_newest(stamp, pose, parent)
+
+    def _insert_at_or_before_newest(self, stamp: int, pose: Pose7, parent: int) -> bool:
+        smv = self._smv
+        pos = bisect_right(smv, stamp, self._start, self._end)
+        k = pos - 1
+        # An exactly equal sample (stamp, pose and parent) is not stored again, but counts as success.
+        while k >= self._start and smv[k] == stamp:
+            if self._qmv[k] == parent and _unpack(self._pmv, k * _ROW) == pose:
+                return True
+            k -= 1
+        start = self._start
+        if pos == start and start:
+            pos = self._start = start - 1  # older than everything: room in front
+            self._oldest = stamp
+        else:
+            if self._end == self._cap:
+                self._make_room(1)
+                pos -= start - self._start
+            end = self._end
+            if pos < end:
+                self._stamps[pos + 1:end + 1] = self._stamps[pos:end]
+                self._poses[pos + 1:end + 1] = self._poses[pos:end]
+                self._parents[pos + 1:end + 1] = self._parents[pos:end]
+            self._end = end + 1
+            if pos == self._start:
+                self._oldest = stamp
+        self._smv[pos] = stamp
+        _pack(self._pmv, pos * _ROW, *pose)
+        self._qmv[pos] = parent
         return True
 
-    def _duplicate(self, stamp: int, pose: Pose7, parent: int) -> bool:
-        i = bisect_right(self.stamps, stamp) - 1
-        while i >= 0 and self.stamps[i] == stamp:
-            if self.data[i] == pose and self.parents[i] == parent:
-                return True
-            i -= 1
-        return False
+    def insert_many(self, stamps: npt.NDArray[np.int64], poses: npt.NDArray[np.float64],
+                    parent: int) -> list[int]:
+        """Insert rows in order, with exactly the result of one :meth:`insert` per row.
 
+        Returns the indices of the rows rejected as too old. Strictly increasing stamps
+        newer than the cache's newest are appended in one step; anything else (out of
+        order, repeated stamps) goes row by row.
+        """
+        n = stamps.shape[0]
+        if n == 0:
+            return []
+        empty = self._end == self._start
+        increasing = n == 1 or bool((stamps[1:] > stamps[:-1]).all())
+        if not increasing or not (empty or int(stamps[0]) > self._newest):
+            rows = poses.tolist()
+            return [k for k, s in enumerate(stamps.tolist()) if not self.insert(s, tuple(rows[k]), parent)]
+        previous = self._newest
+        if self._end + n > self._cap:
+            self._make_room(n)
+        end = self._end
+        self._stamps[end:end + n] = stamps
+        self._poses[end:end + n] = poses
+        self._parents[end:end + n] = parent
+        self._end = end + n
+        self._newest = int(stamps[-1])
+        if empty:
+            self._oldest = int(stamps[0])
+        if self.window is not None and (n >= 2 or not empty):
+            # The state after n single inserts: pruned by the newest stamp before the last one.
+            limit = (int(stamps[-2]) if n >= 2 else previous) - self.window
+            if self._oldest < limit:
+                self._prune(limit)
+        return []
+
+    # ------------------------------------------------------------------ lookup
     def sample(self, t: int) -> tuple[Pose7, int] | CacheMiss:
         """(pose, parent id) at time ``t`` (0 = newest), interpolated; or why not."""
-        stamps = self.stamps
-        n = len(stamps)
-        if n == 0:
-            return CacheMiss(NO_DATA, f"Lookup would require extrapolation at time {format_time(t)}, "
-                             "but only time 0.000000 is in the buffer", 0, 0)
+        start, end = self._start, self._end
+        if end == start:
+            return _no_data(t, 0)
+        last = end - 1
         if t == 0:
-            return self.data[-1], self.parents[-1]
-        if n == 1:
-            if stamps[0] == t:
-                return self.data[0], self.parents[0]
-            return CacheMiss(NO_DATA, f"Lookup would require extrapolation at time {format_time(t)}, "
-                             f"but only time {format_time(stamps[0])} is in the buffer", stamps[0], stamps[0])
-        newest = stamps[-1]
+            return _unpack(self._pmv, last * _ROW), self._qmv[last]
+        if last == start:
+            if self._newest == t:
+                return _unpack(self._pmv, last * _ROW), self._qmv[last]
+            return _no_data(t, self._newest)
+        newest = self._newest
         if t >= newest:
             if t == newest:
-                return self.data[-1], self.parents[-1]
-            return CacheMiss(FORWARD, "Lookup would require extrapolation into the future.  Requested time "
-                             f"{format_time(t)} but the latest data is at time {format_time(newest)}",
-                             stamps[0], newest)
-        oldest = stamps[0]
+                return _unpack(self._pmv, last * _ROW), self._qmv[last]
+            return CacheMiss(ExtrapolationDirection.FORWARD, "Lookup would require extrapolation into the future.  "
+                             f"Requested time {format_time(t)} but the latest data is at time {format_time(newest)}",
+                             self._oldest, newest)
+        oldest = self._oldest
         if t <= oldest:
-            if t == oldest:
-                return self.data[0], self.parents[0]
-            return CacheMiss(BACKWARD, "Lookup would require extrapolation into the past.  Requested time "
-                             f"{format_time(t)} but the earliest data is at time {format_time(oldest)}",
+            if t == oldest:  # among equal oldest stamps tf2 takes the earliest inserted
+                return _unpack(self._pmv, start * _ROW), self._qmv[start]
+            return CacheMiss(ExtrapolationDirection.BACKWARD, "Lookup would require extrapolation into the past.  "
+                             f"Requested time {format_time(t)} but the earliest data is at time {format_time(oldest)}",
                              oldest, newest)
-        i = bisect_right(stamps, t) - 1
-        t0, t1 = stamps[i], stamps[i + 1]
-        parents = self.parents
-        parent = parents[i]
-        if parents[i + 1] != parent:
-            return self.data[i], parent  # never interpolate across a parent change
-        if t0 == t1:
-            return self.data[i + 1], parent
-        return pose_interpolate(self.data[i], self.data[i + 1], (t - t0) / (t1 - t0)), parent
+        smv = self._smv
+        i = bisect_right(smv, t, start, end) - 1
+        parent = self._qmv[i]
+        if self._qmv[i + 1] != parent:
+            return _unpack(self._pmv, i * _ROW), parent  # never interpolate across a parent change
+        t0 = smv[i]
+        return pose_interpolate(_unpack(self._pmv, i * _ROW), _unpack(self._pmv, (i + 1) * _ROW),
+                                (t - t0) / (smv[i + 1] - t0)), parent
+
+    def arrays(self) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.float64], npt.NDArray[np.int32]]:
+        """Zero-copy views of the live stamps, poses and parent ids (valid until the next insert)."""
+        s, e = self._start, self._end
+        return self._stamps[s:e], self._poses[s:e], self._parents[s:e]
 
     def latest(self) -> tuple[int, int]:
         """(newest stamp, its parent id); (0, 0) when empty."""
-        if not self.stamps:
+        if self._end == self._start:
             return 0, 0
-        return self.stamps[-1], self.parents[-1]
+        return self._newest, self._qmv[self._end - 1]
 
     def oldest_stamp(self) -> int:
         """Oldest stamp (0 when empty)."""
-        return self.stamps[0] if self.stamps else 0
+        return self._oldest if self._end > self._start else 0
 
     def __len__(self) -> int:
-        return len(self.stamps)
+        return self._end - self._start
+
+    def nbytes(self) -> int:
+        """Bytes held by the arrays (capacity included)."""
+        return int(self._stamps.nbytes + self._poses.nbytes + self._parents.nbytes)
 
     def clear(self) -> None:
-        """Drop every sample."""
-        self.stamps.clear()
-        self.data.clear()
-        self.parents.clear()
-        self.version += 1
+        """Drop every sample (and the capacity they used)."""
+        self._start = self._end = 0
+        self._allocate(_MIN_SPARE)
 
 
 class StaticCache:
     """One sample, valid at every time."""
 
-    __slots__ = ("parent", "pose", "version")
+    __slots__ = ("parent", "pose")
 
     def __init__(self, pose: Pose7, parent: int) -> None:
         self.pose = pose
         self.parent = parent
-        self.version = 0
 
     def insert(self, stamp: int, pose: Pose7, parent: int) -> bool:
         """Overwrite the sample (never rejected)."""
         self.pose, self.parent = pose, parent
-        self.version += 1
         return True
 
     def sample(self, t: int) -> tuple[Pose7, int]:

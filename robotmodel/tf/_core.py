@@ -3,16 +3,18 @@
 Semantics follow ROS 2 (Jazzy) tf2: time 0 means the latest common time of the chain,
 static transforms are valid at all times, no extrapolation, interpolation per link,
 walk to the common ancestor, loop detection at MAX_GRAPH_DEPTH, and tf2's texts in
-errors and logs. All state is guarded by one condition variable: many threads may
-insert and look up at once, and waiters wake on every accepted insert.
+errors and logs. All state is guarded by one lock; a thread waiting for a transform
+registers the frames its lookup depends on and is woken only by inserts into those
+frames. Nothing outside the buffer (log handlers included) runs under the lock.
 """
 
 from __future__ import annotations
 
-import logging
-import math
 import threading
-from typing import Any
+from collections.abc import Iterable
+
+import numpy as np
+import numpy.typing as npt
 
 from robotmodel.errors import (
     ConnectivityException,
@@ -25,57 +27,94 @@ from robotmodel.msgs.geometry_msgs import TransformStamped
 from robotmodel.spatial import IDENTITY_POSE as IDENTITY
 from robotmodel.spatial import Pose7, pose_compose, pose_inverse, quat_canonical
 from robotmodel.tf._cache import CacheMiss, StaticCache, TimeCache, format_time
-from robotmodel.time import to_nanoseconds
+from robotmodel.tf._checks import (
+    STAMP_LIMIT,
+    canonical_pose,
+    canonical_poses,
+    checked_stamps,
+    frame_ids_ok,
+    int_time_ns,
+    log,
+    time_arg_ns,
+)
+from robotmodel.tf._checks import stamp_ns as check_stamp
 
 __all__ = ["MAX_GRAPH_DEPTH", "BufferCore"]
-
-_log = logging.getLogger("robotmodel.tf")
 
 #: tf2's bound on any walk up the tree; beyond it the tree must contain a loop.
 MAX_GRAPH_DEPTH = 1000
 _DEFAULT_CACHE_NS = 10_000_000_000
 
 
-class BufferCore:
-    """Transform storage and lookup with tf2's BufferCore semantics (times in integer ns)."""
+def _log_old_data(child: str, stamp: int, authority: str) -> None:
+    log.warning("TF_OLD_DATA ignoring data from the past for frame %s at time %s according to "
+                "authority %s\nPossible reasons are listed at "
+                "http://wiki.ros.org/tf/Errors%%20explained", child, format_time(stamp), authority)
 
-    def __init__(self, cache_time_ns: int = _DEFAULT_CACHE_NS) -> None:
+
+class BufferCore:
+    """Transform storage and lookup with tf2's BufferCore semantics (times in integer ns).
+
+    ``cache_time_ns`` is the window of each dynamic frame (tf2's cache_time);
+    ``None`` keeps every sample (unbounded, for offline use: nothing is pruned or
+    rejected as too old).
+    """
+
+    def __init__(self, cache_time_ns: int | None = _DEFAULT_CACHE_NS) -> None:
+        if cache_time_ns is not None and cache_time_ns < 0:
+            raise InvalidArgumentException(f"Invalid cache time {cache_time_ns} ns: it cannot be negative")
         self.cache_time_ns = cache_time_ns
         self._ids: dict[str, int] = {"NO_PARENT": 0}
         self._names: list[str] = ["NO_PARENT"]
         self._caches: list[TimeCache | StaticCache | None] = [None]
         self._authority: dict[int, str] = {}
-        self._cond = threading.Condition(threading.RLock())
-        # Threads blocked in a timed lookup; inserts only notify when there are some.
-        self._waiting = 0
+        self._lock = threading.RLock()
+        # Waiting lookups by the frame names they depend on (tf2's transformable requests).
+        self._waiters: dict[str, list[threading.Condition]] = {}
 
     # ----------------------------------------------------------------- insert
     def set_transform(self, transform: TransformStamped, authority: str, is_static: bool = False) -> bool:
-        """Insert a transform; invalid ones are logged with tf2's texts and not stored."""
-        parent = transform.header.frame_id
-        child = transform.child_frame_id
+        """Insert a TransformStamped (an adapter over :meth:`insert`); False when tf2 would drop it."""
+        tr = transform.transform.translation
+        rot = transform.transform.rotation
+        stamp = transform.header.stamp
+        try:
+            ns = stamp.sec * 1_000_000_000 + stamp.nanosec  # a stamp message (checked by insert)
+        except (AttributeError, TypeError):
+            ns = time_arg_ns(stamp, f'setTransform argument stamp of child_frame_id "{transform.child_frame_id}"')
+        return self.insert(transform.header.frame_id, transform.child_frame_id, ns,
+                           (tr.x, tr.y, tr.z, rot.x, rot.y, rot.z, rot.w), authority, is_static)
+
+    def insert(self, parent: str, child: str, stamp_ns: int, pose: Iterable[float], authority: str,
+               is_static: bool = False) -> bool:
+        """Insert ``child``'s pose in ``parent`` (x, y, z, qx, qy, qz, qw) at ``stamp_ns``, as setTransform.
+
+        Returns False (after logging tf2's text) for what tf2 drops: equal or empty frame ids,
+        NaN, a zero quaternion, data older than the window (TF_OLD_DATA). A stamp outside
+        [0, 2**63) ns or a pose that is not 7 numbers raises InvalidArgumentException.
+        """
         if parent[:1] == "/":
             parent = parent[1:]
         if child[:1] == "/":
             child = child[1:]
-        tr = transform.transform.translation
-        rot = transform.transform.rotation
-        x, y, z = float(tr.x), float(tr.y), float(tr.z)
-        rx, ry, rz, rw = float(rot.x), float(rot.y), float(rot.z), float(rot.w)
-        total = x + y + z + rx + ry + rz + rw
-        n2 = rx * rx + ry * ry + rz * rz + rw * rw
-        if child and parent and child != parent and total - total == 0.0 and rw > 0.5 and abs(n2 - 1.0) < 1e-12:
-            # Common case: valid ids, finite, already a unit quaternion in tf2's sign (w > 0.5
-            # means a positive matrix trace), so tf2's matrix round trip would return it as is.
-            values: Pose7 = (x, y, z, rx, ry, rz, rw)
-        elif not self._valid(x, y, z, rot, parent, child, authority):
-            return False
-        else:
-            qx, qy, qz, qw = quat_canonical((rx, ry, rz, rw))
-            values = (x, y, z, qx, qy, qz, qw)
-        stamp = transform.header.stamp
-        stamp_ns = to_nanoseconds(stamp)  # a stamp message, a Time, or rclpy's Time
-        with self._cond:
+        if type(stamp_ns) is not int or not 0 <= stamp_ns < STAMP_LIMIT:
+            stamp_ns = check_stamp(stamp_ns, child, authority)
+        values: Pose7 | None = None
+        if type(pose) is tuple and len(pose) == 7 and child and parent and child != parent:
+            x, y, z, rx, ry, rz, rw = pose
+            if type(rw) is float and type(x) is float:
+                n2 = rx * rx + ry * ry + rz * rz + rw * rw
+                total = x + y + z + n2
+                # Common case: finite, already a unit quaternion in tf2's sign (w > 0.5 means a
+                # positive matrix trace), so tf2's matrix round trip would return it as is.
+                if total - total == 0.0 and rw > 0.5 and abs(n2 - 1.0) < 1e-12:
+                    values = pose
+        if values is None:
+            ids_ok = frame_ids_ok(parent, child, authority)
+            values = canonical_pose(pose, child, authority)
+            if values is None or not ids_ok:
+                return False
+        with self._lock:
             child_id = self._ids.get(child) or self._intern(child)
             cache = self._caches[child_id]
             # ROS 2 switches a frame between static and dynamic, dropping its history.
@@ -85,44 +124,61 @@ class BufferCore:
             elif not isinstance(cache, TimeCache):
                 cache = self._caches[child_id] = TimeCache(self.cache_time_ns)
             parent_id = self._ids.get(parent) or self._intern(parent)
-            if not cache.insert(stamp_ns, values, parent_id):
-                _log.warning("TF_OLD_DATA ignoring data from the past for frame %s at time %s according to "
-                             "authority %s\nPossible reasons are listed at "
-                             "http://wiki.ros.org/tf/Errors%%20explained", child, format_time(stamp_ns), authority)
-                return False
-            self._authority[child_id] = authority
-            if self._waiting:
-                self._cond.notify_all()
-        return True
+            accepted = cache.insert(stamp_ns, values, parent_id)
+            if accepted:
+                self._authority[child_id] = authority
+                if self._waiters:
+                    self._wake(child)
+        if not accepted:
+            _log_old_data(child, stamp_ns, authority)
+        return accepted
 
-    def _valid(self, x: float, y: float, z: float, rot: Any, parent: str, child: str, authority: str) -> bool:
-        """tf2's checks, each logged with its text; False when any fails."""
-        ok = True
-        qx, qy, qz, qw = quat_canonical((float(rot.x), float(rot.y), float(rot.z), float(rot.w)))
-        if child == parent:
-            _log.error('TF_SELF_TRANSFORM: Ignoring transform from authority "%s" with frame_id and  '
-                       'child_frame_id "%s" because they are the same', authority, child)
-            ok = False
-        if not child:
-            _log.error('TF_NO_CHILD_FRAME_ID: Ignoring transform from authority "%s" because '
-                       "child_frame_id not set ", authority)
-            ok = False
-        if not parent:
-            _log.error('TF_NO_FRAME_ID: Ignoring transform with child_frame_id "%s"  from authority "%s" '
-                       "because frame_id not set", child, authority)
-            ok = False
-        values = (x, y, z, qx, qy, qz, qw)
-        if any(math.isnan(v) or math.isinf(v) for v in values):
-            _log.error('TF_NAN_INPUT: Ignoring transform for child_frame_id "%s" from authority "%s" because '
-                       "of a nan value in the transform (%f %f %f) (%f %f %f %f)", child, authority,
-                       x, y, z, rot.x, rot.y, rot.z, rot.w)
-            ok = False
-        if math.isnan(qw):
-            _log.error('TF_DENORMALIZED_QUATERNION: Ignoring transform for child_frame_id "%s" from authority '
-                       '"%s" because of an invalid quaternion in the transform (%f %f %f %f)', child,
-                       authority, rot.x, rot.y, rot.z, rot.w)
-            ok = False
-        return ok
+    def insert_many(self, parent: str, child: str, stamps: npt.ArrayLike, poses: npt.ArrayLike,
+                    authority: str) -> int:
+        """Insert N dynamic samples of one link at once; returns how many were accepted.
+
+        ``stamps`` are N integer ns, ``poses`` an (N, 7) array (x, y, z, qx, qy, qz, qw).
+        The result is exactly that of N :meth:`insert` calls in the given order (same
+        validation, logs, canonical quaternions, pruning, TF_OLD_DATA and duplicates);
+        strictly increasing stamps newer than the frame's data are stored in one step.
+        """
+        if parent[:1] == "/":
+            parent = parent[1:]
+        if child[:1] == "/":
+            child = child[1:]
+        where = f'insert_many argument stamps for child_frame_id "{child}"'
+        stamp_arr = checked_stamps(stamps, where)
+        try:
+            pose_arr = np.asarray(poses, dtype=np.float64)
+        except (TypeError, ValueError):
+            pose_arr = np.empty((0, 0))
+        if pose_arr.ndim != 2 or pose_arr.shape[1] != 7 or pose_arr.shape[0] != stamp_arr.shape[0]:
+            raise InvalidArgumentException(
+                f'Invalid argument passed to insert_many for child_frame_id "{child}" - poses must be an '
+                f"(N, 7) array with one row per stamp ({stamp_arr.shape[0]} stamps, poses of shape "
+                f"{getattr(pose_arr, 'shape', None)})")
+        if not frame_ids_ok(parent, child, authority):
+            return 0
+        values, good = canonical_poses(pose_arr, child, authority)
+        if not good.all():
+            values, stamp_arr = values[good], stamp_arr[good]
+        if stamp_arr.shape[0] == 0:
+            return 0
+        with self._lock:
+            child_id = self._ids.get(child) or self._intern(child)
+            cache = self._caches[child_id]
+            if not isinstance(cache, TimeCache):
+                cache = self._caches[child_id] = TimeCache(self.cache_time_ns)
+            parent_id = self._ids.get(parent) or self._intern(parent)
+            rejected = cache.insert_many(stamp_arr, values, parent_id)
+            accepted = int(stamp_arr.shape[0]) - len(rejected)
+            if accepted:
+                self._authority[child_id] = authority
+                if self._waiters:
+                    self._wake(child)
+        for k in rejected:
+            _log_old_data(child, int(stamp_arr[k]), authority)
+        return accepted
 
     def _intern(self, name: str) -> int:
         found = self._ids.get(name)
@@ -132,8 +188,42 @@ class BufferCore:
             self._caches.append(None)
         return found
 
+    def _wake(self, frame: str) -> None:
+        for cond in self._waiters.get(frame, ()):
+            cond.notify()
+
+    def _dependencies(self, requests: Iterable[tuple[str, int]]) -> set[str]:
+        """Frames whose data a lookup of these (frame, time) ends reads: their chains up to the roots.
+
+        Both the newest parents (time 0, the latest common time) and the parents at the
+        requested time are followed, so any insert that could change the answer touches one.
+        """
+        names: set[str] = set()
+        for frame, time_ns in requests:
+            names.add(frame)
+            fid = self._ids.get(frame)
+            todo = [fid] if fid else []
+            seen: set[int] = set()
+            while todo and len(seen) <= MAX_GRAPH_DEPTH:
+                fid = todo.pop()
+                if fid in seen or not fid:
+                    continue
+                seen.add(fid)
+                names.add(self._names[fid])
+                cache = self._caches[fid]
+                if cache is None or not len(cache):
+                    continue
+                todo.append(cache.latest()[1])
+                if time_ns:
+                    got = cache.sample(time_ns)
+                    if not isinstance(got, CacheMiss):
+                        todo.append(got[1])
+        return names
+
     # ----------------------------------------------------------------- lookup
     def _validate(self, name: str, arg: str) -> int:
+        if not isinstance(name, str):
+            raise InvalidArgumentException(f"Invalid argument {name!r} passed to {arg} - a frame_id is a string")
         if not name:
             raise InvalidArgumentException(
                 f'Invalid argument "" passed to {arg} - in tf2 frame_ids cannot be empty')
@@ -147,7 +237,9 @@ class BufferCore:
 
     def lookup_ns(self, target: str, source: str, time_ns: int) -> tuple[Pose7, int]:
         """T_target_source at ``time_ns`` (0 = latest common); returns (pose, stamp used)."""
-        with self._cond:
+        if type(time_ns) is not int or not 0 <= time_ns < STAMP_LIMIT:
+            time_ns = int_time_ns(time_ns, "lookupTransform argument time")
+        with self._lock:
             if target == source:
                 stamp = time_ns
                 if stamp == 0 and (fid := self._ids.get(target)):
@@ -169,7 +261,10 @@ class BufferCore:
     def lookup_full_ns(self, target: str, target_ns: int, source: str, source_ns: int,
                        fixed: str) -> tuple[Pose7, int]:
         """T_target_source with the source at ``source_ns`` and the target at ``target_ns`` via ``fixed``."""
-        with self._cond:
+        for value, arg in ((target_ns, "target_time"), (source_ns, "source_time")):
+            if type(value) is not int or not 0 <= value < STAMP_LIMIT:
+                int_time_ns(value, f"lookupTransform argument {arg}")
+        with self._lock:
             self._validate(target, "lookupTransform argument target_frame")
             self._validate(source, "lookupTransform argument source_frame")
             self._validate(fixed, "lookupTransform argument fixed_frame")
@@ -242,7 +337,7 @@ class BufferCore:
     def _extrapolation(self, miss: CacheMiss, time_ns: int, target: str, source: str) -> ExtrapolationException:
         return ExtrapolationException(
             f"{miss.message}, when looking up transform from frame [{source}] to frame [{target}]",
-            target_frame=target, source_frame=source, time_ns=time_ns,
+            direction=miss.direction, target_frame=target, source_frame=source, time_ns=time_ns,
             earliest_ns=miss.earliest_ns, latest_ns=miss.latest_ns)
 
     def _connectivity(self, target: str, source: str) -> ConnectivityException:
@@ -318,7 +413,7 @@ class BufferCore:
     # ------------------------------------------------------------- reporting
     def frames(self) -> dict[str, str]:
         """Every frame that has data, mapped to its current (newest) parent."""
-        with self._cond:
+        with self._lock:
             out = {}
             for fid, cache in enumerate(self._caches):
                 if cache is not None and len(cache):
@@ -327,7 +422,7 @@ class BufferCore:
 
     def all_frame_names(self) -> list[str]:
         """All known frame names in order of first appearance (roots included)."""
-        with self._cond:
+        with self._lock:
             return self._names[1:]
 
     def _frames_as_string(self) -> str:
@@ -341,12 +436,12 @@ class BufferCore:
 
     def all_frames_as_string(self) -> str:
         """tf2's allFramesAsString: one line per frame with data."""
-        with self._cond:
+        with self._lock:
             return self._frames_as_string()
 
     def all_frames_as_yaml(self, current_time_ns: int = 0) -> str:
         """tf2's allFramesAsYAML (the text view_frames parses)."""
-        with self._cond:
+        with self._lock:
             if len(self._names) == 1:
                 return "[]"
             out = []
@@ -368,7 +463,7 @@ class BufferCore:
 
     def clear(self) -> None:
         """Empty every dynamic cache; static transforms and frame names stay."""
-        with self._cond:
+        with self._lock:
             for cache in self._caches:
                 if cache is not None:
                     cache.clear()

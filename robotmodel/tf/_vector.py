@@ -1,8 +1,10 @@
 """Lookups at N stamps at once: the same walk as tf2, each link sampled with searchsorted.
 
-When the tree's shape changes between the stamps (a parent switch) or some stamp has
-no data, it falls back to one scalar lookup per stamp, so results and errors are
-exactly those of N single lookups.
+Each link reads its cache's arrays through zero-copy views and is interpolated by the
+batched kernels of :mod:`robotmodel.spatial` (the same arithmetic as the scalar path).
+When the tree's shape changes between the stamps (a parent switch), some stamp has no
+data, or there are only a few stamps, it runs one scalar lookup per stamp, so results
+and errors are exactly those of N single lookups.
 """
 
 from __future__ import annotations
@@ -21,40 +23,39 @@ if TYPE_CHECKING:
 __all__ = ["lookup_many"]
 
 F = npt.NDArray[np.float64]
+I64 = npt.NDArray[np.int64]
+_SCALAR_BELOW = 4  # fewer stamps than this: scalar lookups are faster than NumPy's per-call cost
 
 
 class _Irregular(Exception):
     """The vectorized walk cannot represent this case; use scalar lookups."""
 
 
-def _snapshot(cache: TimeCache) -> tuple[npt.NDArray[np.int64], F, npt.NDArray[np.int64]]:
-    snap = cache.snap
-    if snap is None or snap[0] != cache.version:
-        data = np.array(cache.data, dtype=np.float64).reshape(-1, 7)
-        snap = (cache.version, np.array(cache.stamps, dtype=np.int64), data, np.array(cache.parents, dtype=np.int64))
-        cache.snap = snap
-    return snap[1], snap[2], snap[3]
-
-
 class _Index:
     """searchsorted results shared by links whose caches hold the same stamps (published together)."""
 
-    def __init__(self, t: npt.NDArray[np.int64]) -> None:
+    def __init__(self, t: I64) -> None:
         self.t = t
-        self.stamps: npt.NDArray[np.int64] | None = None
+        self.t_min, self.t_max = int(t.min()), int(t.max())
+        self.stamps: I64 | None = None
         self.i: npt.NDArray[np.intp] | None = None
         self.j: npt.NDArray[np.intp] | None = None
         self.r: F | None = None
 
-    def lookup(self, stamps: npt.NDArray[np.int64]) -> tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], F]:
+    def lookup(self, stamps: I64) -> tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], F]:
         if self.stamps is None or not np.array_equal(self.stamps, stamps):
             n = stamps.shape[0]
-            i = np.searchsorted(stamps, self.t, side="right") - 1
+            t = self.t
+            # The older neighbour: the last sample at or before t (the newest-inserted of equal
+            # stamps), except exactly at the oldest stamp, where tf2 takes the earliest inserted.
+            i = np.searchsorted(stamps, t, side="right") - 1
+            if stamps[1] == stamps[0]:
+                i[t == stamps[0]] = 0
             j = np.minimum(i + 1, n - 1)
-            t0, t1 = stamps[i], stamps[j]
-            span = (t1 - t0).astype(np.float64)
-            # r = 0 where there is no newer neighbour (exactly on the newest sample).
-            self.r = np.divide((self.t - t0).astype(np.float64), span, out=np.zeros(span.shape), where=span > 0)
+            t0 = stamps[i]
+            span = (stamps[j] - t0).astype(np.float64)
+            # r = 0 on a sample with no newer neighbour (the newest): the sample itself.
+            self.r = np.divide((t - t0).astype(np.float64), span, out=np.zeros(span.shape), where=span > 0)
             self.stamps, self.i, self.j = stamps, i, j
         assert self.i is not None and self.j is not None and self.r is not None
         return self.i, self.j, self.r
@@ -64,28 +65,22 @@ def _sample(cache: TimeCache | StaticCache, index: _Index) -> tuple[F, int]:
     t = index.t
     if isinstance(cache, StaticCache):
         return np.broadcast_to(np.asarray(cache.pose, dtype=np.float64), (t.shape[0], 7)), cache.parent
-    stamps, data, parents = _snapshot(cache)
-    n = stamps.shape[0]
-    if n < 2 or t.min() < stamps[0] or t.max() > stamps[-1]:
-        raise _Irregular
+    stamps, poses, parents = cache.arrays()
+    if stamps.shape[0] < 2 or index.t_min < stamps[0] or index.t_max > stamps[-1]:
+        raise _Irregular  # extrapolation or a single sample: the scalar path gives tf2's errors
     i, j, r = index.lookup(stamps)
     first = parents[i[0]]
-    if np.any(parents[i] != first) or np.any(parents[j] != first):
-        raise _Irregular  # a parent switch inside the span: scalar walk picks per stamp
-    # Equal stamps (a repeated sample) take the newer one, as tf2.
-    equal_stamps = (stamps[j] == stamps[i]) & (i != j)
-    a, b = data[i], data[j]
-    out = poses_interpolate(a, b, r)
-    if equal_stamps.any():
-        out = np.where(equal_stamps[:, None], b, out)
-    return out, int(first)
+    if (parents[i] != first).any() or (parents[j] != first).any():
+        raise _Irregular  # a parent switch inside the span: the scalar walk picks per stamp
+    return poses_interpolate(poses[i], poses[j], r), int(first)
 
 
-def _walk(core: BufferCore, t: npt.NDArray[np.int64], target_id: int, source_id: int) -> F:
+def _walk(core: BufferCore, t: I64, target_id: int, source_id: int) -> F:
     caches = core._caches
     n = t.shape[0]
     index = _Index(t)
-    source_acc = np.tile(np.asarray(IDENTITY_POSE), (n, 1))
+    identity = np.broadcast_to(np.asarray(IDENTITY_POSE), (n, 7))
+    source_acc: F | None = None
     frame, top = source_id, 0
     chain = set()
     while frame:
@@ -99,11 +94,12 @@ def _walk(core: BufferCore, t: npt.NDArray[np.int64], target_id: int, source_id:
                 _sample(cache, index)  # tf2 samples the target's own link: a miss must surface
             break
         pose, parent = _sample(cache, index)
-        source_acc = poses_compose(pose, source_acc)
+        source_acc = pose if source_acc is None else poses_compose(pose, source_acc)
         frame = parent
+    source_acc = identity if source_acc is None else source_acc
     if frame == target_id:
         return source_acc
-    target_acc = np.tile(np.asarray(IDENTITY_POSE), (n, 1))
+    target_acc: F | None = None
     frame = target_id
     seen = set()
     while frame != top:
@@ -115,17 +111,17 @@ def _walk(core: BufferCore, t: npt.NDArray[np.int64], target_id: int, source_id:
             raise _Irregular  # not connected: the scalar walk builds the message
         pose, parent = _sample(cache, index)
         if frame == source_id:
-            return poses_inverse(target_acc)
-        target_acc = poses_compose(pose, target_acc)
+            return poses_inverse(identity if target_acc is None else target_acc)
+        target_acc = pose if target_acc is None else poses_compose(pose, target_acc)
         frame = parent
+    target_acc = identity if target_acc is None else target_acc
     if frame == source_id:
         return poses_inverse(target_acc)
     return poses_compose(poses_inverse(target_acc), source_acc)
 
 
-def lookup_many(core: BufferCore, target: str, source: str,
-                stamps: npt.NDArray[np.int64]) -> tuple[F, F]:
-    """Translations ``(N, 3)`` and quaternions ``(N, 4)`` of T_target_source at each stamp."""
+def lookup_many(core: BufferCore, target: str, source: str, stamps: I64) -> tuple[F, F]:
+    """Translations ``(N, 3)`` and quaternions ``(N, 4)`` of T_target_source at each stamp (checked ns)."""
     n = stamps.shape[0]
     if n == 0:
         return np.zeros((0, 3)), np.zeros((0, 4))
@@ -133,12 +129,14 @@ def lookup_many(core: BufferCore, target: str, source: str,
         return np.zeros((n, 3)), np.tile([0.0, 0.0, 0.0, 1.0], (n, 1))
     target_id = core._validate(target, "lookupTransform argument target_frame")
     source_id = core._validate(source, "lookupTransform argument source_frame")
-    if np.any(stamps == 0):
-        latest = core._latest_common_time(target_id, source_id, target, source)
-        stamps = np.where(stamps == 0, latest, stamps)
-    try:
-        poses = _walk(core, stamps, target_id, source_id)
-        return np.ascontiguousarray(poses[:, :3]), quats_canonical(poses[:, 3:])
-    except _Irregular:
-        out = np.array([core._lookup_ids(target_id, source_id, int(s), target, source)[0] for s in stamps])
-        return out[:, :3].copy(), out[:, 3:].copy()
+    if n >= _SCALAR_BELOW:
+        if (stamps == 0).any():
+            latest = core._latest_common_time(target_id, source_id, target, source)
+            stamps = np.where(stamps == 0, latest, stamps)
+        try:
+            poses = _walk(core, stamps, target_id, source_id)
+            return np.ascontiguousarray(poses[:, :3]), quats_canonical(poses[:, 3:])
+        except _Irregular:
+            pass
+    out = np.array([core._lookup_ids(target_id, source_id, s, target, source)[0] for s in stamps.tolist()])
+    return out[:, :3].copy(), out[:, 3:].copy()
