@@ -3,9 +3,10 @@
 from __future__ import annotations
 
 import logging
+import time
 from collections.abc import Hashable
 
-__all__ = ["WarnOnce"]
+__all__ = ["Every", "WarnOnce"]
 
 
 class WarnOnce:
@@ -27,3 +28,24 @@ class WarnOnce:
     def reset(self) -> None:
         """Forget what was said (a new robot description makes old warnings stale)."""
         self.counts.clear()
+
+
+class Every:
+    """Log at most one warning per ``period`` seconds, saying how many were held back."""
+
+    def __init__(self, log: logging.Logger, period: float = 5.0) -> None:
+        self.log = log
+        self.period = period
+        self._last = -1e9
+        self._held = 0
+
+    def warn(self, message: str, *args: object) -> None:
+        """Log ``message % args`` unless one was logged less than ``period`` seconds ago."""
+        now = time.monotonic()
+        if now - self._last < self.period:
+            self._held += 1
+            return
+        self._last = now
+        held, self._held = self._held, 0
+        suffix = f" ({held} more since the last warning)" if held else ""
+        self.log.warning(message + suffix, *args)
