@@ -58,6 +58,8 @@ class Browser:
         self._next_id = 0
         self._ws: Any = None
         self._session: str | None = None
+        #: DevTools events received so far (method and params), e.g. ``Network.requestWillBeSent``.
+        self.events: list[dict[str, Any]] = []
         self._proc = subprocess.Popen(
             [binary, *FLAGS, f"--user-data-dir={self._profile}", "--remote-debugging-address=127.0.0.1",
              "--remote-debugging-port=0", f"--window-size={width},{height}", "about:blank"],
@@ -122,7 +124,9 @@ class Browser:
                 raise ViewerError("Chromium closed the DevTools connection")
             reply = json.loads(raw)
             if reply.get("id") != ident:
-                continue  # an event: nothing here waits on them
+                if "method" in reply:
+                    self.events.append({"method": reply["method"], "params": reply.get("params", {})})
+                continue
             if "error" in reply:
                 raise ViewerError(f"{method}: {reply['error'].get('message', reply['error'])}")
             result: dict[str, Any] = reply.get("result", {})

@@ -6,7 +6,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from robotmodel.errors import RobotModelError
-from robotmodel.xacro import resolve_uri
+from robotmodel.resources import resolve_uri
 
 __all__ = ["resolve_mesh_uri"]
 
@@ -20,7 +20,7 @@ def resolve_mesh_uri(uri: str, base: Path, package_paths: Sequence[str]) -> Path
         # A common typo (an empty authority) that rviz's resource retriever accepts.
         uri = "package://" + uri[len("package:///"):]
     try:
-        return Path(resolve_uri(uri, base_dir=base, package_paths=package_paths))
+        return resolve_uri(uri, base_dir=base, package_paths=package_paths)
     except RobotModelError:
         raise
     except (OSError, ValueError) as exc:

@@ -314,6 +314,11 @@ class Viewer:
 
     # ----- output ---------------------------------------------------------------------------------------------
 
+    def commands(self) -> list[bytes]:
+        """The current scene as packed meshcat commands (what a newly connected page receives)."""
+        with self._lock:
+            return self._store.commands()
+
     def static_html(self) -> str:
         """One self-contained HTML page of the current scene, viewable offline."""
         with self._lock:

@@ -1,0 +1,149 @@
+"""The viewer in a real browser: headless Chromium over the DevTools protocol.
+
+Each test starts ``robotmodel view`` as a process (own port), loads its page, waits
+(condition + deadline) until the scene is drawn, and checks the PNG: robot-coloured
+pixels where our FK says the visuals are, background in the corners, a different image
+after a joint moves. PNGs are kept under the test's tmp_path.
+"""
+
+from __future__ import annotations
+
+import re
+import signal
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+from conftest import BUNDLED, ERD_ROBOTS
+from livebus import Bus, bus  # noqa: F401 (fixture)
+from viewerhelpers import HIDE_HELPERS, MESH_COUNT, READY, grey_points, loopback_only, png_pixels, robot_fraction
+
+from robotmodel.model import load
+from robotmodel.viewer import Browser, find_chromium
+
+pytestmark = pytest.mark.skipif(find_chromium() is None, reason="needs chromium (CI installs it)")
+
+PANDA = ERD_ROBOTS / "panda_description" / "urdf" / "panda.urdf"
+TALOS = ERD_ROBOTS / "talos_data" / "robots" / "talos_reduced.urdf"
+DIFFBOT = BUNDLED / "diffbot.urdf.xacro"
+
+# (file, extra CLI args, joint to move, slider step to move it to)
+ROBOTS = {
+    # The wheels are round: their frames make a wheel turn visible.
+    "diffbot": (DIFFBOT, ["--frames", "left_wheel,right_wheel"], "left_wheel_joint", 9000),
+    "panda": (PANDA, [], "panda_joint2", 8500),
+    "talos": (TALOS, [], "arm_left_4_joint", 1000),
+}
+
+
+def _visual_count(path: Path) -> int:
+    return sum(len(link.visuals) for link in load(path).links)
+
+
+def _shot(browser: Browser, out: Path) -> bytes:
+    browser.evaluate("new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)))")
+    png = browser.screenshot()
+    out.write_bytes(png)
+    return png
+
+
+@pytest.mark.parametrize("name", list(ROBOTS))
+def test_live_page_draws_the_robot_and_a_joint_moves_it(name: str, bus: Bus, tmp_path: Path) -> None:
+    path, extra, joint, step = ROBOTS[name]
+    proc = bus.robotmodel("view", str(path), "--port", "0", *extra)
+    url = proc.wait_line(r"^http://127\.0\.0\.1:\d+/$", timeout=120).group(0)
+    try:
+        listening = loopback_only(proc.popen.pid)
+        assert listening and all(a.startswith("127.0.0.1:") for a in listening), listening
+        with Browser(width=1280, height=800, timeout=60) as browser:
+            browser.navigate(url)
+            browser.wait_for(READY, timeout=60)
+            browser.wait_for(f"{MESH_COUNT} >= {_visual_count(path)}", timeout=30)
+            browser.evaluate(HIDE_HELPERS)
+            before = _shot(browser, tmp_path / f"{name}-before.png")
+            desc = load(path)
+            on_robot, corners = robot_fraction(browser, before, grey_points(desc, {}))
+            assert on_robot >= 0.7, f"only {on_robot:.0%} of the visuals' centres are drawn robot-coloured"
+            assert corners == 0.0, "the background is robot-coloured: the check would prove nothing"
+            # Move the slider as a user would: set it and fire its input event.
+            browser.evaluate(f"""(() => {{ const s = document.getElementById("joint-{joint}");
+                s.value = {step}; s.dispatchEvent(new Event("input")); return true; }})()""")
+            browser.wait_for("window.robotmodel.latencies.length >= 1", timeout=20)
+            after = _shot(browser, tmp_path / f"{name}-after.png")
+            changed = np.any(png_pixels(before) != png_pixels(after), axis=-1).mean()
+            assert changed > 0.001, f"moving {joint} changed only {changed:.4%} of the pixels"
+            value = float(browser.evaluate(f"window.robotmodel.positions['{joint}']"))
+            assert value != 0.0
+    finally:
+        code = proc.stop(signal.SIGINT)
+    assert code == 0, proc.err[-20:]
+    assert not any("Traceback" in line for line in proc.err), proc.err
+
+
+def test_static_html_of_panda_renders_offline(tmp_path: Path) -> None:
+    from subprocess import run
+
+    out = tmp_path / "panda.html"
+    result = run([sys.executable, "-m", "robotmodel.cli.main", "view", str(PANDA), "--static-html", str(out),
+                  "--joint", "panda_joint4=-1.2"], capture_output=True, text=True, timeout=300, check=False)
+    assert result.returncode == 0, result.stderr
+    html = out.read_text()
+    assert not re.search(r"""(src|href)\s*=\s*["']?(https?:)?//""", html), "the page loads something remotely"
+    with Browser(width=1280, height=800, timeout=60) as browser:
+        browser.call("Network.enable")
+        browser.call("Network.emulateNetworkConditions", {"offline": True, "latency": 0, "downloadThroughput": -1,
+                                                          "uploadThroughput": -1})
+        browser.navigate(out.as_uri())
+        browser.wait_for(READY, timeout=60)
+        assert browser.evaluate(MESH_COUNT) >= _visual_count(PANDA)
+        browser.evaluate(HIDE_HELPERS)
+        png = _shot(browser, tmp_path / "panda-static.png")
+        requested = [e["params"]["request"]["url"] for e in browser.events
+                     if e["method"] == "Network.requestWillBeSent"]
+        on_robot, corners = robot_fraction(browser, png, grey_points(load(PANDA), {"panda_joint4": -1.2}))
+    assert all(u.startswith(("file:", "data:", "blob:")) for u in requested), requested
+    assert on_robot >= 0.7 and corners == 0.0, (on_robot, corners)
+
+
+def test_slider_publishes_joint_states_seen_by_another_process(bus: Bus, tmp_path: Path) -> None:  # noqa: F811
+    gui = bus.robotmodel("joint-state-publisher-gui", str(PANDA), "--port", "0")
+    url = gui.wait_line(r"^http://127\.0\.0\.1:\d+/$", timeout=120).group(0)
+    listener = bus.start(sys.executable, "-c", _SUBSCRIBER)
+    listener.wait_line("^subscribed$", timeout=60)
+    try:
+        listener.wait_line(r"^panda_joint2 0\.0+$", timeout=30)  # the default, before any slider moves
+        listening = loopback_only(gui.popen.pid)
+        assert listening and all(a.startswith("127.0.0.1:") for a in listening), listening
+        with Browser(timeout=60) as browser:
+            browser.navigate(url)
+            browser.wait_for(READY, timeout=60)
+            browser.evaluate("""(() => { const s = document.getElementById("joint-panda_joint2");
+                s.value = 7500; s.dispatchEvent(new Event("input")); return true; })()""")
+            shown = float(browser.evaluate("window.robotmodel.positions['panda_joint2']"))
+        # joint_state_publisher_gui's mapping: min + (max - min) * step / 10000.
+        expected = -1.7628 + (1.7628 + 1.7628) * 0.75
+        assert shown == pytest.approx(expected)
+        match = listener.wait_line(r"^panda_joint2 (0\.[1-9]\d*)$", timeout=30)
+        assert float(match.group(1)) == pytest.approx(expected, abs=1e-9)
+    finally:
+        listener.stop(signal.SIGTERM)
+        code = gui.stop(signal.SIGINT)
+    assert code == 0, gui.err[-20:]
+
+
+_SUBSCRIBER = """
+import signal, sys, threading
+from robotmodel.bus import Node
+from robotmodel.msgs import JointState
+stop = threading.Event()
+signal.signal(signal.SIGTERM, lambda *a: stop.set())
+def on_state(msg):
+    for name, value in zip(msg.name, msg.position):
+        if name == "panda_joint2":
+            print(name, repr(float(value)), flush=True)
+with Node("listener") as node:
+    node.create_subscription(JointState, "joint_states", on_state, 10)
+    print("subscribed", flush=True)
+    stop.wait()
+"""
