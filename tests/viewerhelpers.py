@@ -7,7 +7,6 @@ and trimesh's bounds of the mesh files; the page only supplies its camera matric
 from __future__ import annotations
 
 import io
-import os
 import socket
 from pathlib import Path
 
@@ -117,10 +116,9 @@ def robot_fraction(browser: Browser, png: bytes, points: list[np.ndarray]) -> tu
 def loopback_only(pid: int) -> list[str]:
     """Addresses the process listens on (TCP and UDP-bound, IPv4 and IPv6), from /proc."""
     inodes = set()
-    fd_dir = Path(f"/proc/{pid}/fd")
-    for fd in os.listdir(fd_dir):
+    for fd in Path(f"/proc/{pid}/fd").iterdir():
         try:
-            target = os.readlink(fd_dir / fd)
+            target = str(fd.readlink())
         except OSError:
             continue
         if target.startswith("socket:["):

@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 from conftest import BUNDLED, ERD_ROBOTS
-from livebus import Bus, bus  # noqa: F401 (fixture)
+from livebus import Bus
 from viewerhelpers import HIDE_HELPERS, MESH_COUNT, READY, grey_points, loopback_only, png_pixels, robot_fraction
 
 from robotmodel.model import load
@@ -106,7 +106,7 @@ def test_static_html_of_panda_renders_offline(tmp_path: Path) -> None:
     assert on_robot >= 0.7 and corners == 0.0, (on_robot, corners)
 
 
-def test_slider_publishes_joint_states_seen_by_another_process(bus: Bus, tmp_path: Path) -> None:  # noqa: F811
+def test_slider_publishes_joint_states_seen_by_another_process(bus: Bus, tmp_path: Path) -> None:
     gui = bus.robotmodel("joint-state-publisher-gui", str(PANDA), "--port", "0")
     url = gui.wait_line(r"^http://127\.0\.0\.1:\d+/$", timeout=120).group(0)
     listener = bus.start(sys.executable, "-c", _SUBSCRIBER)
