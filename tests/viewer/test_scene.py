@@ -1,0 +1,186 @@
+"""The viewer without a browser: scene tree, joint updates, colours, mesh cache, sliders, CLI errors."""
+
+from __future__ import annotations
+
+import logging
+import math
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+import trimesh
+import umsgpack
+from conftest import BUNDLED, ERD_ROBOTS
+from pytransform3d.rotations import matrix_from_axis_angle, matrix_from_euler
+
+from robotmodel.kinematics import KinematicModel
+from robotmodel.model import load, parse_urdf
+from robotmodel.viewer import Viewer, load_mesh, slider_joints
+
+PANDA = ERD_ROBOTS / "panda_description" / "urdf" / "panda.urdf"
+ARM = BUNDLED / "arm.urdf.xacro"
+
+
+def _decode(viewer: Viewer) -> tuple[dict[str, np.ndarray], dict[str, dict]]:
+    """(path → local 4×4 transform, path → object JSON) of the viewer's current scene."""
+    transforms, objects = {}, {}
+    for packed in viewer.commands():
+        cmd = umsgpack.unpackb(packed)
+        if cmd["type"] == "set_transform":
+            transforms[cmd["path"]] = np.frombuffer(cmd["matrix"].data, dtype=np.float32).reshape(4, 4).T
+        elif cmd["type"] == "set_object":
+            objects[cmd["path"]] = cmd["object"]
+    return transforms, objects
+
+
+def _origin(xyz: tuple[float, ...], rpy: tuple[float, ...]) -> np.ndarray:
+    m = np.eye(4)
+    m[:3, :3] = matrix_from_euler(rpy, 0, 1, 2, True)
+    m[:3, 3] = xyz
+    return m
+
+
+def test_scene_tree_mirrors_the_kinematic_tree() -> None:
+    desc = load(PANDA)
+    _, objects = _decode(Viewer(desc, serve=False))
+    # Each link's group sits inside its parent link's group.
+    for _, joint in desc.walk():
+        parent = next(p for p in objects if p.split("/<")[0].endswith("/" + joint.parent))
+        child = next(p for p in objects if p.split("/<")[0].endswith("/" + joint.child))
+        assert child.split("/<")[0] == parent.split("/<")[0] + "/" + joint.child
+
+
+def test_a_joint_update_sets_only_that_joints_local_transform() -> None:
+    desc = load(ARM)
+    viewer = Viewer(desc, serve=False)
+    before, _ = _decode(viewer)
+    model = KinematicModel(desc)
+    master = next(r.master for r in model.mimics.values())
+    mimics = [r for r in model.mimics.values() if r.master == master]
+    viewer.display({master: 0.01})
+    after, _ = _decode(viewer)
+    changed = {p for p in after if p not in before or not np.allclose(after[p], before[p])}
+    moved = {desc.joint(master).child, *(desc.joint(r.joint).child for r in mimics)}
+    assert {p.rsplit("/", 1)[-1] for p in changed} == moved
+    # The new transform is the joint's origin times its motion, computed here by hand.
+    joint = desc.joint(master)
+    path = next(p for p in changed if p.endswith("/" + joint.child))
+    motion = np.eye(4)
+    if joint.type.value == "prismatic":
+        motion[:3, 3] = np.asarray(joint.axis) * 0.01
+    else:
+        motion[:3, :3] = matrix_from_axis_angle([*joint.axis, 0.01])
+    np.testing.assert_allclose(after[path], _origin(joint.origin.xyz, joint.origin.rpy) @ motion, atol=1e-6)
+
+
+def test_panda_meshes_keep_their_own_colours_and_the_urdf_colours_boxes(tmp_path: Path) -> None:
+    _, objects = _decode(Viewer(load(PANDA), serve=False, cache_dir=tmp_path))
+    link0 = next(o for p, o in objects.items() if "/panda_link0/<visual>/" in p)
+    colours = np.frombuffer(link0["geometries"][0]["data"]["attributes"]["color"]["array"].data, np.float32)
+    rgb = {tuple(np.round(c * 255).astype(int)) for c in colours.reshape(-1, 3)}
+    # link0.dae's materials, read independently with trimesh.
+    scene = trimesh.load(ERD_ROBOTS / "panda_description" / "meshes" / "visual" / "link0.dae", force="scene")
+    expected = {tuple(int(c) for c in g.visual.material.main_color[:3]) for g in scene.geometry.values()}
+    assert rgb == expected
+    urdf = """<robot name="r"><material name="teal"><color rgba="0 0.5 0.5 1"/></material>
+      <link name="a"><visual><geometry><box size="1 2 3"/></geometry><material name="teal"/></visual></link></robot>"""
+    _, objects = _decode(Viewer(parse_urdf(urdf), serve=False))
+    box = next(o for p, o in objects.items() if "<visual>" in p)
+    assert box["materials"][0]["color"] == (0 << 16) | (128 << 8) | 128
+    assert (box["geometries"][0]["width"], box["geometries"][0]["height"], box["geometries"][0]["depth"]) == (1, 2, 3)
+
+
+def test_mesh_scale_scales_the_vertices(tmp_path: Path) -> None:
+    stl = ERD_ROBOTS / "panda_description" / "meshes" / "collision" / "link1.stl"
+    urdf = f"""<robot name="r"><link name="a"><visual><geometry><mesh filename="file://{stl}" scale="2 1 0.5"/>
+      </geometry></visual></link></robot>"""
+    _, objects = _decode(Viewer(parse_urdf(urdf), serve=False, cache_dir=tmp_path))
+    obj = next(o for p, o in objects.items() if "<visual>" in p)
+    verts = np.frombuffer(obj["geometries"][0]["data"]["attributes"]["position"]["array"].data, np.float32)
+    bounds = trimesh.load(stl).bounds
+    np.testing.assert_allclose(verts.reshape(-1, 3).min(axis=0), bounds[0] * [2, 1, 0.5], rtol=1e-5, atol=1e-6)
+
+
+def test_mesh_cache_is_keyed_by_file_and_mtime(tmp_path: Path) -> None:
+    src = tmp_path / "part.stl"
+    shutil.copy(ERD_ROBOTS / "panda_description" / "meshes" / "collision" / "link3.stl", src)
+    cache = tmp_path / "cache"
+    first, hit1 = load_mesh(src, cache)
+    second, hit2 = load_mesh(src, cache)
+    assert (hit1, hit2) == (False, True)
+    np.testing.assert_array_equal(first.vertices, second.vertices)
+    reference = trimesh.load(src)
+    np.testing.assert_allclose(first.vertices, reference.vertices, rtol=1e-6)
+    st = src.stat()
+    os.utime(src, ns=(st.st_atime_ns, st.st_mtime_ns + 1_000_000_000))
+    _, hit3 = load_mesh(src, cache)
+    assert hit3 is False
+
+
+def test_a_missing_mesh_becomes_a_placeholder_and_one_warning(tmp_path: Path, caplog: pytest.LogCaptureFixture
+                                                             ) -> None:
+    urdf = tmp_path / "r.urdf"
+    urdf.write_text("""<robot name="r"><link name="base"><visual><geometry><mesh filename="meshes/gone.stl"/>
+      </geometry></visual><visual><geometry><mesh filename="meshes/gone.stl"/></geometry></visual>
+      <collision><geometry><mesh filename="meshes/gone.stl"/></geometry></collision></link></robot>""")
+    with caplog.at_level(logging.WARNING, logger="robotmodel.viewer"):
+        viewer = Viewer(load(urdf), serve=False, cache_dir=tmp_path / "cache")
+    warnings = [r.getMessage() for r in caplog.records]
+    assert len(warnings) == 1
+    assert "link 'base'" in warnings[0] and "meshes/gone.stl" in warnings[0]
+    _, objects = _decode(viewer)
+    boxes = [o for p, o in objects.items() if "/base/<visual>/" in p]
+    assert len(boxes) == 2 and all(b["geometries"][0]["type"] == "BoxGeometry" for b in boxes)
+    out = tmp_path / "r.html"
+    result = subprocess.run([sys.executable, "-m", "robotmodel.cli.main", "view", str(urdf), "--static-html", str(out)],
+                            capture_output=True, text=True, timeout=120, check=False)
+    assert result.returncode == 0 and out.is_file()
+    assert [line for line in result.stderr.splitlines() if "gone.stl" in line] != []
+    assert "Traceback" not in result.stderr
+
+
+def test_sliders_follow_joint_state_publisher_gui() -> None:
+    urdf = """<robot name="r"><link name="a"/><link name="b"/><link name="c"/><link name="d"/><link name="e"/>
+      <joint name="wheel" type="continuous"><parent link="a"/><child link="b"/></joint>
+      <joint name="lift" type="prismatic"><parent link="a"/><child link="c"/><axis xyz="0 0 1"/>
+        <limit lower="0.2" upper="1.0" effort="1" velocity="1"/></joint>
+      <joint name="arm" type="revolute"><parent link="a"/><child link="d"/>
+        <limit lower="-2" upper="2" effort="1" velocity="1"/>
+        <safety_controller k_velocity="1" soft_lower_limit="-1" soft_upper_limit="1.5"/></joint>
+      <joint name="twin" type="revolute"><parent link="a"/><child link="e"/><mimic joint="arm" multiplier="2"/>
+        <limit lower="-4" upper="4" effort="1" velocity="1"/></joint></robot>"""
+    sliders = {s.name: s for s in slider_joints(KinematicModel(parse_urdf(urdf)))}
+    assert list(sliders) == ["wheel", "lift", "arm"]
+    assert (sliders["wheel"].min, sliders["wheel"].max, sliders["wheel"].zero) == (-math.pi, math.pi, 0.0)
+    assert (sliders["lift"].min, sliders["lift"].max, sliders["lift"].zero) == (0.2, 1.0, pytest.approx(0.6))
+    assert (sliders["arm"].min, sliders["arm"].max, sliders["arm"].zero) == (-1.0, 1.5, 0.0)
+
+
+def _cli(*args: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([sys.executable, "-m", "robotmodel.cli.main", *args], capture_output=True, text=True,
+                          timeout=120, check=False)
+
+
+@pytest.mark.parametrize(("args", "needle"), [
+    (["--frames", "nope"], "has no link 'nope'"),
+    (["--joint", "left_wheel_joint=abc"], "'abc' is not a number"),
+    (["--joint", "wheel=1"], "unknown joint 'wheel'"),
+])
+def test_cli_bad_input_is_one_line_and_no_file(tmp_path: Path, args: list[str], needle: str) -> None:
+    out = tmp_path / "out.html"
+    result = _cli("view", str(BUNDLED / "diffbot.urdf.xacro"), "--static-html", str(out), *args)
+    assert result.returncode == 1
+    errors = [line for line in result.stderr.splitlines() if "error" in line]
+    assert len(errors) == 1 and needle in errors[0], result.stderr
+    assert not out.exists() and list(tmp_path.iterdir()) == []
+
+
+def test_command_modules_import_nothing_heavy() -> None:
+    code = ("import sys, robotmodel.cli.view_cmd, robotmodel.cli.jsp_gui_cmd; "
+            "print(sorted(m for m in ('meshcat', 'trimesh', 'pinocchio', 'tornado', 'zenoh') if m in sys.modules))")
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60, check=True)
+    assert result.stdout.strip() == "[]"
