@@ -9,6 +9,10 @@ also exported here; ``Time``, ``Duration`` (builtin_interfaces) and ``Clock``
 (rosgraph_msgs) only from their package modules, since :mod:`robotmodel.time` has
 values of those names.
 
+For the ``/tf`` hot path, :func:`decode_tf_records` and :func:`encode_tf_records` read and
+write TFMessage bytes as :class:`TFRecord` tuples (parent, child, stamp_ns, pose) that
+feed a buffer's message-free ``insert`` directly.
+
 Field values are checked against their ROS types when a message is converted or
 encoded (:func:`to_rosbags`, :func:`serialize`): out of range, a
 :class:`~robotmodel.errors.MessageError` names the field.
@@ -28,6 +32,7 @@ from robotmodel.msgs import (
 from robotmodel.msgs._build import make_transform, stamp
 from robotmodel.msgs._cdr import deserialize, serialize, type_hash
 from robotmodel.msgs._convert import Message, from_rosbags, message_class, to_rosbags, typestore
+from robotmodel.msgs._tfcodec import TFRecord, decode_tf_records, encode_tf_records
 from robotmodel.msgs.geometry_msgs import (
     Point,
     PointStamped,
@@ -61,6 +66,7 @@ __all__ = [
     "Quaternion",
     "String",
     "TFMessage",
+    "TFRecord",
     "Transform",
     "TransformStamped",
     "Twist",
@@ -69,7 +75,9 @@ __all__ = [
     "Vector3",
     "Vector3Stamped",
     "builtin_interfaces",
+    "decode_tf_records",
     "deserialize",
+    "encode_tf_records",
     "from_rosbags",
     "geometry_msgs",
     "make_transform",

@@ -50,10 +50,10 @@ def deserialize(data: bytes | bytearray | memoryview, msgtype: str | type[Any], 
 
     Raises :class:`MessageError` when the bytes do not decode as that type.
     """
+    if store is None and (msgtype is TFMessage or msgtype == _TF) and is_little_endian_cdr(data):
+        return decode_tfmessage(data)
     name = _msgtype(msgtype)
     message_class(name)  # an unknown type fails here, before decoding
-    if store is None and name == _TF and is_little_endian_cdr(data):
-        return decode_tfmessage(data)
     store = store if store is not None else typestore()
     from rosbags.serde import SerdeError
 

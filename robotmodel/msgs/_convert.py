@@ -12,7 +12,6 @@ import math
 import numbers
 import operator
 from collections.abc import Callable
-from dataclasses import fields
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any, ClassVar, Protocol
 
@@ -28,6 +27,7 @@ from robotmodel.msgs import (
     std_msgs,
     tf2_msgs,
 )
+from robotmodel.msgs._codegen import INT_RANGES, from_converter, to_converter
 
 if TYPE_CHECKING:
     from rosbags.typesys.store import Typestore
@@ -46,13 +46,8 @@ _CLASSES: dict[str, type[Any]] = {
     for module in (builtin_interfaces, std_msgs, geometry_msgs, sensor_msgs, nav_msgs, tf2_msgs, rosgraph_msgs)
     for cls in (getattr(module, name) for name in module.__all__)
 }
-_FIELDS: dict[type[Any], tuple[str, ...]] = {cls: tuple(f.name for f in fields(cls)) for cls in _CLASSES.values()}
+_FROM: dict[type[Any], Converter] = {}
 
-_INT_RANGES = {
-    "bool": (0, 1), "byte": (0, 255), "char": (0, 255), "uint8": (0, 255), "int8": (-(2**7), 2**7 - 1),
-    "uint16": (0, 2**16 - 1), "int16": (-(2**15), 2**15 - 1), "uint32": (0, 2**32 - 1),
-    "int32": (-(2**31), 2**31 - 1), "uint64": (0, 2**64 - 1), "int64": (-(2**63), 2**63 - 1),
-}
 _FLOAT32_MAX = 3.4028234663852886e38
 _DTYPES = {"float32": np.float32, "float64": np.float64, "bool": np.bool_, "byte": np.uint8, "char": np.uint8,
            "uint8": np.uint8, "int8": np.int8, "uint16": np.uint16, "int16": np.int16, "uint32": np.uint32,
@@ -87,7 +82,7 @@ def message_class(msgtype: str) -> type[Any]:
 
 
 def _int_converter(typename: str) -> Converter:
-    lo, hi = _INT_RANGES[typename]
+    lo, hi = INT_RANGES[typename]
 
     def convert(value: Any) -> int:
         if type(value) is not int:
@@ -233,6 +228,20 @@ def _struct_converter(store: Typestore, msgtype: str) -> Converter:
     return convert
 
 
+_FAST: dict[tuple[int, str], tuple[Typestore, Converter]] = {}
+
+
+def _fast_converter(store: Typestore, msgtype: str) -> Converter:
+    key = (id(store), msgtype)
+    cached = _FAST.get(key)
+    if cached is not None and cached[0] is store:
+        return cached[1]
+    plan = [(name, desc, _field_converter(store, desc)) for name, desc in store.fielddefs[msgtype][1]]
+    convert = to_converter(store.types[msgtype], plan, lambda nested: _fast_converter(store, nested))
+    _FAST[key] = (store, convert)
+    return convert
+
+
 def to_rosbags(msg: Message, store: Typestore | None = None) -> Any:
     """``msg`` as an instance of the typestore's class for its type (default: ROS 2 Jazzy).
 
@@ -243,29 +252,22 @@ def to_rosbags(msg: Message, store: Typestore | None = None) -> Any:
     if msgtype not in store.types:
         raise MessageError(f"'{msgtype}' is not a type of the typestore")
     try:
+        return _fast_converter(store, msgtype)(msg)
+    except (_Bad, AttributeError, TypeError, ValueError):
+        pass  # the checked path below converts what the fast one could not, or names the field
+    try:
         return _struct_converter(store, msgtype)(msg)
     except _Bad as exc:
         raise MessageError(f"{msgtype}{''.join(reversed(exc.path))}: {exc.reason}") from None
 
 
-def _from(obj: Any) -> Any:
+def from_rosbags(obj: Any) -> Any:
+    """The robotmodel message equal to a rosbags message object (fields it lacks, like ROS 1's seq, drop)."""
     msgtype = getattr(obj, "__msgtype__", None)
     cls = _CLASSES.get(msgtype) if isinstance(msgtype, str) else None
     if cls is None:
         raise MessageError(f"no robotmodel message class for '{msgtype or type(obj).__name__}'")
-    values = []
-    for name in _FIELDS[cls]:
-        value = getattr(obj, name)
-        if hasattr(type(value), "__msgtype__"):
-            value = _from(value)
-        elif isinstance(value, np.ndarray):
-            value = value.tolist()
-        elif isinstance(value, list):
-            value = [_from(v) if hasattr(type(v), "__msgtype__") else v for v in value]
-        values.append(value)
-    return cls(*values)
-
-
-def from_rosbags(obj: Any) -> Any:
-    """The robotmodel message equal to a rosbags message object (fields it lacks, like ROS 1's seq, drop)."""
-    return _from(obj)
+    try:
+        return from_converter(cls, _FROM)(obj)
+    except (AttributeError, TypeError) as exc:
+        raise MessageError(f"cannot read a {msgtype} from {type(obj).__name__}: {exc}") from None

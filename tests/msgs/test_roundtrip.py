@@ -28,6 +28,8 @@ from robotmodel.msgs import (
     to_rosbags,
     type_hash,
 )
+from robotmodel.msgs._convert import _struct_converter
+from robotmodel.time import Time
 
 MSGTYPES = [c.__msgtype__ for c in CLASSES]
 INT32 = (-(2**31), 2**31 - 1)
@@ -42,6 +44,8 @@ def test_random_messages_round_trip_through_rosbags_and_cdr(msgtype: str, data: 
     obj = to_rosbags(msg)
     assert type(obj) is STORE.types[msgtype]
     raw = bytes(STORE.serialize_cdr(obj, msgtype))
+    checked = _struct_converter(STORE, msgtype)(msg)  # the slow, field-by-field checked path
+    assert bytes(STORE.serialize_cdr(checked, msgtype)) == raw
     assert from_rosbags(STORE.deserialize_cdr(raw, msgtype)) == msg
     assert serialize(msg) == raw  # TFMessage takes the hand-written codec: same bytes
     assert deserialize(raw, msgtype) == msg
@@ -94,6 +98,8 @@ def _tf_with_stamp(sec: Any, nanosec: Any) -> TFMessage:
     (Odometry(child_frame_id=None), r"^nav_msgs/msg/Odometry\.child_frame_id: None is not a str$"),
     (TFMessage([TransformStamped(), "x"]), r"transforms\[1\]: a str is not a geometry_msgs/msg/TransformStamped"),
     (TFMessage([TransformStamped(child_frame_id=b"x")]), r"transforms\[0\]\.child_frame_id: b'x' is not a str"),
+    (TransformStamped(Header(stamp=Time(seconds=1))),  # type: ignore[arg-type]
+     r"TransformStamped\.header\.stamp: a Time is not a builtin_interfaces/msg/Time \(no field 'sec'\)"),
 ], ids=lambda v: "" if isinstance(v, str) else type(v).__name__)
 def test_out_of_range_values_are_rejected_naming_the_field(msg: Any, text: str) -> None:
     with pytest.raises(MessageError, match=text):

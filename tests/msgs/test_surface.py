@@ -29,9 +29,9 @@ def test_time_surface() -> None:
 def test_msgs_surface() -> None:
     assert robotmodel.msgs.__all__ == [
         "Header", "JointState", "Message", "Odometry", "Point", "PointStamped", "Pose", "PoseStamped",
-        "PoseWithCovariance", "Quaternion", "String", "TFMessage", "Transform", "TransformStamped", "Twist",
-        "TwistStamped", "TwistWithCovariance", "Vector3", "Vector3Stamped", "builtin_interfaces", "deserialize",
-        "from_rosbags", "geometry_msgs", "make_transform", "message_class", "nav_msgs", "rosgraph_msgs",
+        "PoseWithCovariance", "Quaternion", "String", "TFMessage", "TFRecord", "Transform", "TransformStamped", "Twist",
+        "TwistStamped", "TwistWithCovariance", "Vector3", "Vector3Stamped", "builtin_interfaces", "decode_tf_records",
+        "deserialize", "encode_tf_records", "from_rosbags", "geometry_msgs", "make_transform", "message_class", "nav_msgs", "rosgraph_msgs",
         "sensor_msgs", "serialize", "stamp", "std_msgs", "tf2_msgs", "to_rosbags", "type_hash", "typestore",
     ]
     for name in robotmodel.msgs.__all__:
