@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from typing import NamedTuple
 
 from robotmodel.cli._rosfmt import strtod_prefix
 
@@ -45,8 +45,7 @@ class EchoArgsError(Exception):
         self.to_stdout = to_stdout
 
 
-@dataclass(frozen=True)
-class EchoArgs:
+class EchoArgs(NamedTuple):
     """``tf2_echo SOURCE TARGET [RATE]``: prints TARGET's pose in SOURCE every 1/RATE s."""
 
     source_frame: str

@@ -16,16 +16,16 @@ from typing import TextIO
 __all__ = ["log_line", "ros_log", "strtod_prefix"]
 
 # strtod's grammar (decimal, hexadecimal, inf/infinity, nan with an optional tag), after
-# optional leading white space.
-_NUMBER = re.compile(
+# optional leading white space. Compiled on first use: `robotmodel --help` never needs it.
+_NUMBER_PATTERN = (
     r"""\s*[+-]?(?:
         0[xX](?:[0-9a-fA-F]+\.?[0-9a-fA-F]*|\.[0-9a-fA-F]+)(?:[pP][+-]?[0-9]+)?
       | (?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?
       | [iI][nN][fF](?:[iI][nN][iI][tT][yY])?
       | [nN][aA][nN](?:\([0-9A-Za-z_]*\))?
-    )""",
-    re.VERBOSE,
+    )"""
 )
+_number: re.Pattern[str] | None = None
 
 
 def strtod_prefix(text: str) -> tuple[float, int] | None:
@@ -33,7 +33,10 @@ def strtod_prefix(text: str) -> tuple[float, int] | None:
 
     None when no number starts the text (where ``std::stod`` throws ``invalid_argument``).
     """
-    found = _NUMBER.match(text)
+    global _number
+    if _number is None:
+        _number = re.compile(_NUMBER_PATTERN, re.VERBOSE)
+    found = _number.match(text)
     if found is None:
         return None
     literal = found.group(0).strip()

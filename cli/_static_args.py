@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from typing import NamedTuple
 
 from robotmodel.cli._rosfmt import strtod_prefix
 
@@ -71,8 +71,7 @@ class StaticArgsError(Exception):
     """The words do not form a valid command line; ``str()`` is ROS 2's error text."""
 
 
-@dataclass(frozen=True)
-class StaticTransformSpec:
+class StaticTransformSpec(NamedTuple):
     """What to publish: ``child_frame_id``'s pose in ``frame_id``.
 
     ``period_ms`` is set for ROS 1 tf's forms (republish on ``/tf`` every period) and None

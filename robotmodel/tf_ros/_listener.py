@@ -18,6 +18,7 @@ DEFAULT_AUTHORITY = "default_authority"
 
 _log = logging.getLogger("robotmodel.tf_ros")
 _WARN_PERIOD_S = 5.0
+_GRAPH_RETRY_S = 0.2
 
 
 class TransformListener:
@@ -52,6 +53,8 @@ class TransformListener:
         self.buffer = buffer
         self._authority = authority
         self._names: dict[bytes, str] = {}
+        # When a GID was last looked for in vain: its publisher's token may still be on its way.
+        self._misses: dict[bytes, float] = {}
         self._warn_lock = threading.Lock()
         self._last_warning = -1e9
         self._held = 0
@@ -114,16 +117,22 @@ class TransformListener:
         if self._authority is not None:
             return self._authority
         name = self._names.get(gid)
-        if name is None:
-            from robotmodel.bus import EntityKind
+        if name is not None:
+            return name
+        now = time.monotonic()
+        if now - self._misses.get(gid, -1e9) < _GRAPH_RETRY_S:
+            return DEFAULT_AUTHORITY
+        from robotmodel.bus import EntityKind
 
-            for entity in self._node.node.context.graph.entities():
-                if entity.kind is EntityKind.PUBLISHER and entity.gid == gid:
-                    name = self._names[gid] = entity.node_fqn
-                    break
-            else:
-                return DEFAULT_AUTHORITY
-        return name
+        for entity in self._node.node.context.graph.entities():
+            if entity.kind is EntityKind.PUBLISHER and entity.gid == gid:
+                self._misses.pop(gid, None)
+                name = self._names[gid] = str(entity.node_fqn)
+                return name
+        # Scanning the graph for every sample of an unknown publisher would cost a lot at high
+        # rates; look again a little later instead.
+        self._misses[gid] = now
+        return DEFAULT_AUTHORITY
 
     def callback(self, data: TFMessage, authority: str = DEFAULT_AUTHORITY) -> None:
         """Insert the transforms of one ``/tf`` message."""
