@@ -155,22 +155,32 @@ def lint(
     findings.extend(_massless_moving_bodies(desc))
     findings.extend(_material_findings(desc))
     base = Path(base_dir) if base_dir is not None else Path.cwd()
-    resolved: dict[str, Path | str] = {}
+    resolved: dict[str, str | None] = {}
     for link_name, uri in _mesh_uris(desc):
         if uri not in resolved:
-            try:
-                resolved[uri] = _resolve_mesh(uri, base, package_paths)
-            except RobotModelError as exc:
-                resolved[uri] = str(exc)
-        path = resolved[uri]
-        if isinstance(path, str):
-            findings.append(Finding("mesh-not-found", Severity.WARNING, f"link [{link_name}]",
-                                    f"mesh '{uri}' does not resolve: {path}"))
-            continue
-        if not path.is_file():
-            findings.append(Finding("mesh-not-found", Severity.WARNING, f"link [{link_name}]",
-                                    f"mesh '{uri}' resolves to {path}, which does not exist"))
+            resolved[uri] = _mesh_problem(uri, base, package_paths)
+        problem = resolved[uri]
+        if problem is not None:
+            findings.append(Finding("mesh-not-found", Severity.WARNING, f"link [{link_name}]", problem))
     return findings
+
+
+def _mesh_problem(uri: str, base: Path, package_paths: Sequence[str | os.PathLike[str]]) -> str | None:
+    """Why the mesh ``uri`` cannot be read, or None when it resolves to a file."""
+    try:
+        path = _resolve_mesh(uri, base, package_paths)
+    except RobotModelError as exc:
+        return f"mesh '{uri}' does not resolve: {exc}"
+    except (OSError, ValueError) as exc:
+        # A name too long, a NUL byte, a denied directory: the filesystem's answer is the finding.
+        return f"mesh '{uri}' does not resolve: {exc.strerror if isinstance(exc, OSError) else exc}"
+    try:
+        if path.is_file():
+            return None
+    except (OSError, ValueError) as exc:
+        reason = exc.strerror if isinstance(exc, OSError) else exc
+        return f"mesh '{uri}' resolves to {path}, which cannot be read: {reason}"
+    return f"mesh '{uri}' resolves to {path}, which does not exist"
 
 
 def _massless_moving_bodies(desc: RobotDescription) -> Iterator[Finding]:

@@ -307,35 +307,42 @@ def parse_urdf(text: str | bytes, *, source: str | None = None) -> RobotDescript
     Raises :class:`URDFParseError` for malformed XML or elements and :class:`URDFError`
     for an invalid robot.
     """
-    decoded = text if isinstance(text, str) else _decode(text)
-    return parse_located(text, source=source, original=decoded)
+    if isinstance(text, bytes):
+        text = _decode(text, source or "<string>")
+    return parse_located(text, source=source, original=text)
 
 
 _DECLARED = re.compile(rb"""^<\?xml[^>]*?encoding\s*=\s*["']([A-Za-z0-9._-]+)["']""")
+_BOMS = ((b"\xef\xbb\xbf", "utf-8-sig"), (b"\xff\xfe", "utf-16"), (b"\xfe\xff", "utf-16"))
 
 
-def _decode(data: bytes) -> str:
-    """The text of XML bytes, for messages and provenance (the parser decodes on its own)."""
-    if data.startswith((b"\xff\xfe", b"\xfe\xff")):
-        encoding = "utf-16"
-    else:
-        declared = _DECLARED.match(data.lstrip(b"\xef\xbb\xbf"))
-        encoding = declared.group(1).decode("ascii") if declared else "utf-8"
+def _decode(data: bytes, label: str) -> str:
+    """The text of an XML document's bytes: its byte-order mark, else its declaration, else UTF-8.
+
+    Decoded with Python's codecs rather than expat's, which knows only a handful of
+    encodings (not UTF-16LE by that name, nor most single-byte code pages).
+    """
+    encoding = next((name for bom, name in _BOMS if data.startswith(bom)), None)
+    if encoding is None:
+        declared = _DECLARED.match(data)
+        if declared is None and data[:2] in (b"<\x00", b"\x00<"):
+            encoding = "utf-16-le" if data[0] == 0x3C else "utf-16-be"
+        else:
+            encoding = declared.group(1).decode("ascii") if declared else "utf-8"
     try:
-        return data.decode(encoding, errors="replace")
+        return data.decode(encoding).lstrip("\ufeff")
     except LookupError:
-        return data.decode("utf-8", errors="replace")
+        raise URDFParseError(f"{label}: malformed XML: unknown encoding '{encoding}'") from None
+    except UnicodeDecodeError as exc:
+        raise URDFParseError(f"{label}: malformed XML: not valid {encoding} at byte {exc.start}") from None
 
 
-def parse_located(text: str | bytes, *, source: str | None, original: str) -> RobotDescription:
+def parse_located(text: str, *, source: str | None, original: str) -> RobotDescription:
     """:func:`parse_urdf`, with error lines looked up in ``original`` (the pre-xacro text)."""
     label = source or "<string>"
     try:
         robot = ET.fromstring(text)
     except ET.ParseError as exc:
-        raise URDFParseError(f"{label}: malformed XML: {exc}") from None
-    except (LookupError, ValueError) as exc:
-        # An unknown or wrong declared encoding.
         raise URDFParseError(f"{label}: malformed XML: {exc}") from None
     if robot.tag.startswith("{"):
         # tinyxml (urdfdom) ignores namespaces, so <robot xmlns="..."> is a robot.
@@ -344,7 +351,7 @@ def parse_located(text: str | bytes, *, source: str | None, original: str) -> Ro
             if isinstance(elem.tag, str) and elem.tag.startswith(namespace):
                 elem.tag = elem.tag[len(namespace) :]
     try:
-        return _robot(robot, text if isinstance(text, str) else original, source)
+        return _robot(robot, text, source)
     except URDFError as exc:
         line = locate(original, str(exc))
         where = f"{label}:{line}" if line is not None else label
