@@ -7,7 +7,7 @@ import threading
 from collections.abc import Sequence
 from types import FrameType
 
-__all__ = ["split_connect", "stop_on_signals"]
+__all__ = ["split_connect", "stop_on_signals", "strip_ros_args"]
 
 
 def split_connect(words: Sequence[str]) -> tuple[list[str], list[str]]:
@@ -31,6 +31,25 @@ def split_connect(words: Sequence[str]) -> tuple[list[str], list[str]]:
             rest.append(word)
         i += 1
     return rest, endpoints
+
+
+def strip_ros_args(words: Sequence[str]) -> list[str]:
+    """The words without ROS's own arguments, as ``rclcpp::init_and_remove_ros_arguments`` leaves them.
+
+    Each ``--ros-args`` block runs to a ``--`` (dropped too) or to the end. ROS arguments
+    (remappings, parameters, log levels) have no meaning here; they are accepted and ignored
+    so that command lines written for ROS run unchanged.
+    """
+    rest: list[str] = []
+    inside = False
+    for word in words:
+        if inside:
+            inside = word != "--"
+        elif word == "--ros-args":
+            inside = True
+        else:
+            rest.append(word)
+    return rest
 
 
 def stop_on_signals() -> threading.Event:

@@ -11,7 +11,7 @@ import argparse
 import time
 from typing import Any
 
-from robotmodel.cli._bus_args import split_connect, stop_on_signals
+from robotmodel.cli._bus_args import split_connect, stop_on_signals, strip_ros_args
 from robotmodel.cli._rosfmt import ros_log
 from robotmodel.cli._static_args import (
     USAGE,
@@ -47,7 +47,7 @@ def _transform(spec: StaticTransformSpec, stamp_ns: int) -> Any:
 
 def run(args: argparse.Namespace) -> int:
     """Parse, validate, publish, then wait for a stop signal."""
-    words, endpoints = split_connect(args.words)
+    words, endpoints = split_connect(strip_ros_args(args.words))
     try:
         spec = parse_static_args(words, lambda text: ros_log("WARN", "", text))
     except StaticArgsError as exc:

@@ -12,7 +12,7 @@ import sys
 import time
 from typing import Any
 
-from robotmodel.cli._bus_args import split_connect, stop_on_signals
+from robotmodel.cli._bus_args import split_connect, stop_on_signals, strip_ros_args
 from robotmodel.cli._echo_fmt import (
     USAGE,
     EchoArgsError,
@@ -60,7 +60,7 @@ def can_transform_reason(buffer: Any, target: str, source: str) -> str:
 
 def run(args: argparse.Namespace) -> int:
     """Listen, wait for the frames, then print the transform at the given rate."""
-    words, endpoints = split_connect(args.words)
+    words, endpoints = split_connect(strip_ros_args(args.words))
     if words and words[0] in ("-h", "--help"):
         print(USAGE, end="", flush=True)
         return 0
