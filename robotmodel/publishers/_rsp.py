@@ -8,7 +8,7 @@ from types import TracebackType
 from typing import Any
 
 from robotmodel.model import RobotDescription
-from robotmodel.msgs import JointState, String, TransformStamped
+from robotmodel.msgs import JointState, String, TFMessage, TransformStamped
 from robotmodel.publishers._jointstate_cdr import CannotDecode, JointStateDecoder
 from robotmodel.publishers._once import Every
 from robotmodel.publishers._rsp_state import RobotStateLogic
@@ -65,12 +65,14 @@ class RobotStatePublisher:
             raise
 
     def _open(self, subscribe: bool) -> None:
-        from robotmodel.bus import QOS_LATCHED, QoS, Reliability
+        from robotmodel.bus import QOS_LATCHED, QOS_TF, QoS, Reliability
         from robotmodel.tf_ros import StaticTransformBroadcaster, TransformBroadcaster
 
         node = self.node
         self._description_pub = node.create_publisher(String, "robot_description", QOS_LATCHED)
         self._tf = TransformBroadcaster(node)
+        # The broadcaster's topic and QoS, for bytes encoded here (see _on_raw).
+        self._tf_pub = node.create_publisher(TFMessage, "/tf", QOS_TF)
         self._tf_static = StaticTransformBroadcaster(node)
         self._publish_setup()
         if subscribe:
@@ -94,7 +96,13 @@ class RobotStatePublisher:
                 self._bad_payload.warn("dropped a message on '%s' that does not decode as sensor_msgs/msg/"
                                        "JointState: %s: %s", raw.topic, type(exc).__name__, exc)
                 return
-        self.joint_state(msg)
+        with self._lock:
+            if self._closed:
+                return
+            found = self.logic.joint_state_arrays(msg, self.clock.now().nanoseconds)
+            if found is not None:
+                # Bytes straight from the arrays: no message objects on the hot path.
+                self._tf_pub.publish_raw(self.logic.encode_tf(*found))
 
     def joint_state(self, msg: JointState) -> list[TransformStamped] | None:
         """Handle one JointState as robot_state_publisher does; returns what went on /tf (None: nothing)."""
@@ -137,7 +145,7 @@ class RobotStatePublisher:
             if self._closed:
                 return
             self._closed = True
-        for name in ("_sub", "_tf", "_tf_static", "_description_pub"):
+        for name in ("_sub", "_tf_pub", "_tf", "_tf_static", "_description_pub"):
             handle = getattr(self, name, None)
             if handle is not None:
                 handle.close()

@@ -32,6 +32,7 @@ from robotmodel.msgs.sensor_msgs import JointState
 from robotmodel.msgs.std_msgs import Header
 from robotmodel.publishers._errors import PublisherError
 from robotmodel.publishers._once import WarnOnce
+from robotmodel.publishers._tf_cdr import TFTemplate
 
 __all__ = ["RobotStateLogic", "check_publish_frequency"]
 
@@ -99,6 +100,7 @@ class RobotStateLogic:
     def frame_prefix(self, prefix: str) -> None:
         self._prefix = prefix
         self._frames = self._prefixed(self._moving)
+        self._templates.clear()
 
     # -- the robot --------------------------------------------------------------------------------
     def setup(self, description: RobotDescription | str) -> None:
@@ -120,6 +122,7 @@ class RobotStateLogic:
         self._known = {j.name for j in desc.joints}
         self._moving = joint_transforms(model, dict.fromkeys(model.variables, 0.0))
         self._frames = self._prefixed(self._moving)
+        self._templates: dict[tuple[str, ...], TFTemplate] = {}
         self._static = static_transforms(model)
         self._warn.reset()
         self.log.info("Robot initialized")
@@ -136,6 +139,13 @@ class RobotStateLogic:
 
     def joint_state(self, msg: JointState, now_ns: int) -> list[TransformStamped] | None:
         """The /tf transforms for one joint state received at ``now_ns``; None if RSP would not publish."""
+        found = self.joint_state_arrays(msg, now_ns)
+        if found is None:
+            return None
+        return self._stamped(found[0], found[1], self._frames)
+
+    def joint_state_arrays(self, msg: JointState, now_ns: int) -> tuple[JointTransforms, int] | None:
+        """As :meth:`joint_state`, as arrays (frame ids without the prefix) and the stamp; see :meth:`encode_tf`."""
         names, positions = msg.name, msg.position
         if len(names) != len(positions):
             self._bad_lengths(names, positions)
@@ -161,10 +171,21 @@ class RobotStateLogic:
             self._say_unknown(unknown)
         if not all(map(math.isfinite, positions)):
             values = self._finite(values)
-        out = self._stamped(joint_transforms(self.model, values), stamp_ns, self._frames)
+        out = joint_transforms(self.model, values)
         for name in names:
             self._last_publish[name] = stamp_ns
-        return out
+        return out, stamp_ns
+
+    def encode_tf(self, transforms: JointTransforms, stamp_ns: int) -> bytes:
+        """The CDR bytes of the TFMessage :meth:`joint_state` would give, built without message objects."""
+        template = self._templates.get(transforms.joints)
+        if template is None:
+            if len(self._templates) >= 64:  # joint sets vary only with odd publishers; stay bounded
+                self._templates.clear()
+            frames = self._frames
+            template = TFTemplate([frames[j][0] for j in transforms.joints], [frames[j][1] for j in transforms.joints])
+            self._templates[transforms.joints] = template
+        return template.encode(stamp_ns, transforms.translations, transforms.rotations)
 
     def _finite(self, values: dict[str, float]) -> dict[str, float]:
         # Left out before the maths, so that mimic joints of a NaN master are left out too.
