@@ -8,7 +8,7 @@ import time
 from types import TracebackType
 from typing import Any
 
-from robotmodel.msgs import TFMessage
+from robotmodel.msgs import TFMessage, decode_tf_records
 from robotmodel.tf_ros._node import OwnedNode
 
 __all__ = ["DEFAULT_AUTHORITY", "TransformListener"]
@@ -26,7 +26,9 @@ class TransformListener:
 
     Messages are handled on the bus's receiving thread, so ``buffer.lookup_transform(...,
     timeout=...)`` called from any other thread wakes as soon as the data it needs arrives.
-    Static transforms go in with ``set_transform_static``.
+    Payloads are decoded straight into records for the buffer's message-free ``insert``
+    (static ones as static); a buffer without ``insert`` gets ``set_transform`` /
+    ``set_transform_static`` with messages, as tf2_ros does.
 
     ``node`` is a :class:`robotmodel.bus.Node`; without one the listener opens its own
     (``node_options``, e.g. ``domain_id`` or ``connect``, go to its constructor) and closes
@@ -61,6 +63,8 @@ class TransformListener:
         # Samples may arrive while a subscription is being created (latched ones do), so the
         # decoder must be ready before either exists.
         self._codec = codec_for(TFMessage)
+        # robotmodel's buffers take message-free inserts; any other buffer gets messages.
+        self._insert: Any = getattr(buffer, "insert", None)
         self._node = OwnedNode(node, "transform_listener_impl_", **node_options)
         self._subs: list[Any] = []
         self._closed = False
@@ -83,25 +87,31 @@ class TransformListener:
         """The bus node the subscriptions live on."""
         return self._node.node
 
-    # The bus hands over undecoded samples so that the publisher's GID is at hand.
+    # The bus hands over undecoded samples so that the publisher's GID is at hand; they are
+    # decoded straight into (parent, child, stamp, pose) records when the buffer takes them.
     def _on_tf(self, raw: Any) -> None:
-        msg = self._decode(raw)
-        if msg is not None:
-            self.callback(msg, self._who(raw.attachment.gid))
+        self._handle(raw, False)
 
     def _on_tf_static(self, raw: Any) -> None:
-        msg = self._decode(raw)
-        if msg is not None:
-            self.static_callback(msg, self._who(raw.attachment.gid))
+        self._handle(raw, True)
 
-    def _decode(self, raw: Any) -> TFMessage | None:
+    def _handle(self, raw: Any, is_static: bool) -> None:
+        insert = self._insert
         try:
-            msg: TFMessage = self._codec.decode(raw.payload)
+            if insert is not None:
+                records = decode_tf_records(raw.payload)
+            else:
+                msg: TFMessage = self._codec.decode(raw.payload)
         except Exception as exc:  # any decoder failure means a bad payload: drop it, never crash
             self._warn(f"dropped a message on '{raw.topic}' that does not decode as tf2_msgs/msg/TFMessage: "
                        f"{type(exc).__name__}: {exc}")
-            return None
-        return msg
+            return
+        who = self._who(raw.attachment.gid)
+        if insert is None:
+            (self.static_callback if is_static else self.callback)(msg, who)
+            return
+        for rec in records:
+            insert(rec.parent, rec.child, rec.stamp_ns, rec.pose, who, is_static)
 
     def _warn(self, text: str) -> None:
         now = time.monotonic()
