@@ -13,8 +13,6 @@ from collections.abc import Callable
 from dataclasses import fields
 from typing import Any, get_args, get_origin, get_type_hints
 
-import numpy as np
-
 __all__ = ["INT_RANGES", "from_converter", "to_converter"]
 
 Converter = Callable[[Any], Any]
@@ -27,7 +25,8 @@ INT_RANGES = {
 
 
 def _tolist(value: Any) -> list[Any]:
-    return value.tolist() if isinstance(value, np.ndarray) else list(value)
+    # numpy arrays (rosbags' primitive sequences) know tolist(); numpy itself stays unimported here.
+    return value.tolist() if hasattr(value, "tolist") else list(value)
 
 
 def _compile(name: str, expr: str, env: dict[str, Any]) -> Converter:

@@ -15,8 +15,6 @@ from collections.abc import Callable
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any, ClassVar, Protocol
 
-import numpy as np
-
 from robotmodel.errors import MessageError
 from robotmodel.msgs import (
     builtin_interfaces,
@@ -49,9 +47,10 @@ _CLASSES: dict[str, type[Any]] = {
 _FROM: dict[type[Any], Converter] = {}
 
 _FLOAT32_MAX = 3.4028234663852886e38
-_DTYPES = {"float32": np.float32, "float64": np.float64, "bool": np.bool_, "byte": np.uint8, "char": np.uint8,
-           "uint8": np.uint8, "int8": np.int8, "uint16": np.uint16, "int16": np.int16, "uint32": np.uint32,
-           "int32": np.int32, "uint64": np.uint64, "int64": np.int64}
+# numpy dtype names of ROS primitive types; numpy is imported when a converter is first built.
+_DTYPES = {"float32": "float32", "float64": "float64", "bool": "bool", "byte": "uint8", "char": "uint8",
+           "uint8": "uint8", "int8": "int8", "uint16": "uint16", "int16": "int16", "uint32": "uint32",
+           "int32": "int32", "uint64": "uint64", "int64": "int64"}
 
 Converter = Callable[[Any], Any]
 
@@ -111,7 +110,7 @@ def _float_converter(typename: str) -> Converter:
 
 
 def _bool_converter(value: Any) -> bool:
-    if not isinstance(value, bool | np.bool_):
+    if not (isinstance(value, bool) or type(value).__name__ in ("bool", "bool_")):  # or numpy's bool
         raise _Bad(f"{value!r} is not a bool")
     return bool(value)
 
@@ -138,18 +137,21 @@ def _base_converter(typename: str, bound: int) -> Converter:
 
 
 def _numeric_array_converter(typename: str, length: int, bounded: bool) -> Converter:
-    dtype = _DTYPES[typename]
+    import numpy as np
+
+    dtype = np.dtype(_DTYPES[typename])
+    is_f64 = dtype == np.float64
     element = _base_converter(typename, 0)
 
     def convert(value: Any) -> Any:
         if isinstance(value, np.ndarray) and value.ndim == 1 and value.dtype.kind in "fiub":
             items: Any = value
-            checked = value.dtype.kind == "f" and dtype is np.float64
+            checked = value.dtype.kind == "f" and is_f64
         elif isinstance(value, str | bytes):
             raise _Bad(f"{value!r} is not a sequence of {typename}")
         else:
             items = list(value)
-            checked = dtype is np.float64 and all(type(item) is float for item in items)
+            checked = is_f64 and all(type(item) is float for item in items)
         if (bounded and len(items) > length) or (not bounded and length and len(items) != length):
             raise _Bad(f"{len(items)} elements where {typename}[{'<=' if bounded else ''}{length}] is expected")
         if not checked:
