@@ -52,6 +52,20 @@ def test_interpolated_lookups_and_timeout_issued_before_data(bus):
     assert not any("Traceback" in line for line in listener.err + broadcaster.err)
 
 
+def test_lookup_waits_for_a_broadcaster_process_started_after_it(bus):
+    t0 = time.time_ns() // STEP * STEP
+    listener = bus.child("interp", str(t0), "30")
+    listener.wait_line("^WAITING$")
+    # Only now does the broadcaster process start (its start-up alone takes a while, hence the
+    # longer timeout here; the test above holds the 2 s one with a broadcaster already up).
+    broadcaster = bus.child("broadcaster", "late_mover", str(t0))
+    got = listener.wait_line(r"^GOT ([0-9.]+)$", timeout=60)
+    assert float(got.group(1)) < 30.0
+    listener.wait_line(r"^\[", timeout=60)
+    assert listener.popen.wait(30) == 0
+    assert broadcaster.stop() == 0
+
+
 def stamps_of(proc):
     return [int(line.split()[1]) for line in proc.out if line.startswith("STAMP ")]
 

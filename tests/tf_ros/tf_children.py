@@ -8,8 +8,8 @@ Modes:
   T0 + k * 10 ms (k = 0, 1, ...), pose :func:`pose_at`. Prints ``READY`` once its node is
   up; with GO it then waits for a line on stdin before sending. Prints ``SENT k`` every
   10th message. Stops on SIGTERM.
-- ``interp T0_NS``: a listener that prints ``WAITING``, then looks up ``base -> moving`` at
-  the latest time with a 2 s timeout (before any data exists), prints ``GOT <seconds>``,
+- ``interp T0_NS [TIMEOUT_S]``: a listener that prints ``WAITING``, then looks up ``base -> moving``
+  at the latest time with a timeout (2 s by default) before any data exists, prints ``GOT <seconds>``,
   waits until stamps T0..T0+0.5 s are in, and prints one JSON line with lookups at
   times between received stamps.
 - ``watch``: a listener printing ``STAMP <ns>`` for the newest ``base -> moving`` every
@@ -63,7 +63,7 @@ def broadcaster(name: str, t0_ns: int, wait_go: bool) -> None:
             stop.wait(max(0.0, start + k * 0.01 - time.monotonic()))
 
 
-def interp(t0_ns: int) -> None:
+def interp(t0_ns: int, timeout_s: float) -> None:
     from robotmodel.tf import Buffer, Duration, Time
     from robotmodel.tf_ros import TransformListener
 
@@ -71,7 +71,7 @@ def interp(t0_ns: int) -> None:
     with TransformListener(buffer):
         print("WAITING", flush=True)
         began = time.monotonic()
-        buffer.lookup_transform("base", "moving", Time(), timeout=Duration(seconds=2))
+        buffer.lookup_transform("base", "moving", Time(), timeout=Duration(seconds=timeout_s))
         print(f"GOT {time.monotonic() - began:.3f}", flush=True)
         last = t0_ns + 50 * 10_000_000
         buffer.lookup_transform("base", "moving", Time(nanoseconds=last), timeout=Duration(seconds=10))
@@ -125,7 +125,7 @@ if __name__ == "__main__":
     if mode == "broadcaster":
         broadcaster(args[0], int(args[1]), len(args) > 2 and args[2] == "GO")
     elif mode == "interp":
-        interp(int(args[0]))
+        interp(int(args[0]), float(args[1]) if len(args) > 1 else 2.0)
     elif mode == "watch":
         watch()
     elif mode == "garbage":
