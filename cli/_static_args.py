@@ -112,8 +112,6 @@ def parse_static_args(words: Sequence[str], warn: Callable[[str], None]) -> Stat
 
     Raises :class:`StaticArgsError` with ROS 2's text for any bad command line.
     """
-    if not words:
-        raise StaticArgsError("Not enough arguments to parse")
     values: dict[str, float] = {}
     strings: dict[str, str] = {}
     positional: list[str] = []

@@ -91,7 +91,8 @@ def test_numbers_read_like_stod():
 
 
 @pytest.mark.parametrize(("words", "message"), [
-    ((), "Not enough arguments to parse"),
+    # tf2_ros counts the program name, so its "Not enough arguments to parse" never shows.
+    ((), "Frame id must not be empty"),
     (("--frame-id", "a", "--x"), "Not enough arguments for --x"),
     (("--x", "abc", "--frame-id", "a", "--child-frame-id", "b"), "Failed to parse --x argument as float"),
     (("--qx", "0", "--roll", "1", "--frame-id", "a", "--child-frame-id", "b"),
