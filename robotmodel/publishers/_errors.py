@@ -8,4 +8,4 @@ __all__ = ["PublisherError"]
 
 
 class PublisherError(RobotModelError, ValueError):
-    """A state publisher was given a parameter outside its range (the text is ROS's)."""
+    """A state publisher was given a parameter outside its range (ROS's text where ROS has one)."""

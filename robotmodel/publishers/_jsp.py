@@ -12,6 +12,7 @@ from typing import Any
 from robotmodel.errors import RobotModelError
 from robotmodel.model import RobotDescription, to_urdf
 from robotmodel.msgs import JointState, String
+from robotmodel.publishers._errors import PublisherError
 from robotmodel.publishers._jsp_joints import FreeJoint
 from robotmodel.publishers._jsp_state import JointStateLogic
 from robotmodel.time import Clock, SystemClock
@@ -55,8 +56,8 @@ class JointStatePublisher:
         logger: logging.Logger | None = None,
         **node_options: Any,
     ) -> None:
-        if rate < 0:
-            raise ValueError(f"rate must be >= 0 Hz, got {rate}")
+        if not rate >= 0:
+            raise PublisherError(f"rate must be >= 0 Hz, got {rate}")
         self.log = logger or _LOG
         self.logic = JointStateLogic(
             zeros=zeros, use_mimic_tags=use_mimic_tags, use_smallest_joint_limits=use_smallest_joint_limits,

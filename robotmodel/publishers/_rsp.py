@@ -66,12 +66,11 @@ class RobotStatePublisher:
 
     def _open(self, subscribe: bool) -> None:
         from robotmodel.bus import QOS_LATCHED, QOS_TF, QoS, Reliability
-        from robotmodel.tf_ros import StaticTransformBroadcaster, TransformBroadcaster
+        from robotmodel.tf_ros import StaticTransformBroadcaster
 
         node = self.node
         self._description_pub = node.create_publisher(String, "robot_description", QOS_LATCHED)
-        self._tf = TransformBroadcaster(node)
-        # The broadcaster's topic and QoS, for bytes encoded here (see _on_raw).
+        # TransformBroadcaster's topic and QoS; one publisher serves messages and bytes encoded here.
         self._tf_pub = node.create_publisher(TFMessage, "/tf", QOS_TF)
         self._tf_static = StaticTransformBroadcaster(node)
         self._publish_setup()
@@ -111,7 +110,7 @@ class RobotStatePublisher:
                 return None
             out = self.logic.joint_state(msg, self.clock.now().nanoseconds)
             if out is not None:
-                self._tf.send_transform(out)
+                self._tf_pub.publish(TFMessage(transforms=out))
         return out
 
     def set_description(self, description: RobotDescription | str) -> None:
@@ -145,7 +144,7 @@ class RobotStatePublisher:
             if self._closed:
                 return
             self._closed = True
-        for name in ("_sub", "_tf_pub", "_tf", "_tf_static", "_description_pub"):
+        for name in ("_sub", "_tf_pub", "_tf_static", "_description_pub"):
             handle = getattr(self, name, None)
             if handle is not None:
                 handle.close()
