@@ -5,10 +5,13 @@ from __future__ import annotations
 import threading
 from collections.abc import Iterable
 from types import TracebackType
-from typing import Any
+from typing import TYPE_CHECKING, Any, Self
 
 from robotmodel.msgs import TFMessage, TransformStamped
 from robotmodel.tf_ros._node import OwnedNode
+
+if TYPE_CHECKING:
+    from robotmodel.bus import Node, QoS
 
 __all__ = ["StaticTransformBroadcaster", "TransformBroadcaster"]
 
@@ -26,7 +29,7 @@ class _Broadcaster:
     _topic = ""
     _prefix = ""
 
-    def __init__(self, node: Any | None, qos: Any | None, default_qos: Any, **node_options: Any) -> None:
+    def __init__(self, node: Node | None, qos: QoS | int | None, default_qos: QoS, **node_options: Any) -> None:
         self._node = OwnedNode(node, self._prefix, **node_options)
         try:
             self._pub = self._node.node.create_publisher(TFMessage, self._topic, qos if qos is not None
@@ -37,7 +40,7 @@ class _Broadcaster:
         self._closed = False
 
     @property
-    def node(self) -> Any:
+    def node(self) -> Node:
         """The bus node this broadcaster publishes from."""
         return self._node.node
 
@@ -51,7 +54,7 @@ class _Broadcaster:
         finally:
             self._node.close()
 
-    def __enter__(self) -> Any:
+    def __enter__(self) -> Self:
         return self
 
     def __exit__(self, exc_type: type[BaseException] | None, exc: BaseException | None,
@@ -70,7 +73,7 @@ class TransformBroadcaster(_Broadcaster):
     _topic = "/tf"
     _prefix = "transform_broadcaster_"
 
-    def __init__(self, node: Any | None = None, qos: Any | None = None, **node_options: Any) -> None:
+    def __init__(self, node: Node | None = None, qos: QoS | int | None = None, **node_options: Any) -> None:
         from robotmodel.bus import QOS_TF
 
         super().__init__(node, qos, QOS_TF, **node_options)
@@ -93,7 +96,7 @@ class StaticTransformBroadcaster(_Broadcaster):
     _topic = "/tf_static"
     _prefix = "static_transform_broadcaster_"
 
-    def __init__(self, node: Any | None = None, qos: Any | None = None, **node_options: Any) -> None:
+    def __init__(self, node: Node | None = None, qos: QoS | int | None = None, **node_options: Any) -> None:
         from robotmodel.bus import QOS_TF_STATIC
 
         super().__init__(node, qos, QOS_TF_STATIC, **node_options)

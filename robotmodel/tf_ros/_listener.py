@@ -6,10 +6,13 @@ import logging
 import threading
 import time
 from types import TracebackType
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from robotmodel.msgs import TFMessage, decode_tf_records
 from robotmodel.tf_ros._node import OwnedNode
+
+if TYPE_CHECKING:
+    from robotmodel.bus import Node, QoS, RawMessage
 
 __all__ = ["DEFAULT_AUTHORITY", "TransformListener"]
 
@@ -46,8 +49,8 @@ class TransformListener:
     A payload that does not decode as a TFMessage is dropped with a rate-limited warning.
     """
 
-    def __init__(self, buffer: Any, node: Any | None = None, *, spin_thread: bool = True,
-                 qos: Any | None = None, static_qos: Any | None = None, authority: str | None = None,
+    def __init__(self, buffer: Any, node: Node | None = None, *, spin_thread: bool = True,
+                 qos: QoS | int | None = None, static_qos: QoS | int | None = None, authority: str | None = None,
                  **node_options: Any) -> None:
         from robotmodel.bus import QOS_TF, QOS_TF_STATIC_LISTENER, codec_for
 
@@ -83,19 +86,19 @@ class TransformListener:
             raise
 
     @property
-    def node(self) -> Any:
+    def node(self) -> Node:
         """The bus node the subscriptions live on."""
         return self._node.node
 
     # The bus hands over undecoded samples so that the publisher's GID is at hand; they are
     # decoded straight into (parent, child, stamp, pose) records when the buffer takes them.
-    def _on_tf(self, raw: Any) -> None:
+    def _on_tf(self, raw: RawMessage) -> None:
         self._handle(raw, False)
 
-    def _on_tf_static(self, raw: Any) -> None:
+    def _on_tf_static(self, raw: RawMessage) -> None:
         self._handle(raw, True)
 
-    def _handle(self, raw: Any, is_static: bool) -> None:
+    def _handle(self, raw: RawMessage, is_static: bool) -> None:
         insert = self._insert
         try:
             if insert is not None:

@@ -9,7 +9,10 @@ from __future__ import annotations
 
 import secrets
 import string
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from robotmodel.bus import Node
 
 __all__ = ["OwnedNode", "unique_name"]
 
@@ -26,7 +29,7 @@ class OwnedNode:
 
     __slots__ = ("node", "owned")
 
-    def __init__(self, node: Any | None, prefix: str, **options: Any) -> None:
+    def __init__(self, node: Node | None, prefix: str, **options: Any) -> None:
         if node is None:
             # Imported here so that robotmodel.tf_ros can be imported without opening anything.
             from robotmodel.bus import Node
@@ -35,7 +38,7 @@ class OwnedNode:
             self.owned = True
         else:
             self.owned = False
-        self.node: Any = node
+        self.node: Node = node
 
     def close(self) -> None:
         """Close the node when it is ours; harmless twice."""
