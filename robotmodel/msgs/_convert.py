@@ -210,7 +210,8 @@ def _struct_converter(store: Typestore, msgtype: str) -> Converter:
     cached = _STRUCTS.get(key)
     if cached is not None and cached[0] is store:
         return cached[1]
-    plan: list[tuple[str, Converter]] = []
+    # ROS types cannot nest themselves, so the plan is complete before anyone can see it.
+    plan = [(name, _field_converter(store, desc)) for name, desc in store.fielddefs[msgtype][1]]
     target = store.types[msgtype]
 
     def convert(value: Any) -> Any:
@@ -225,8 +226,7 @@ def _struct_converter(store: Typestore, msgtype: str) -> Converter:
                 raise _Bad(f"a {type(value).__name__} is not a {msgtype} (no field '{name}')") from None
         return target(*args)
 
-    _STRUCTS[key] = (store, convert)  # registered before filling: recursive types find it
-    plan.extend((name, _field_converter(store, desc)) for name, desc in store.fielddefs[msgtype][1])
+    _STRUCTS[key] = (store, convert)
     return convert
 
 

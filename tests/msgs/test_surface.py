@@ -24,6 +24,8 @@ def test_time_surface() -> None:
     assert robotmodel.time.__all__ == [
         "Clock", "Duration", "PlaybackClock", "Rate", "SimClock", "SystemClock", "Time", "to_nanoseconds",
     ]
+    for name in robotmodel.time.__all__:
+        assert getattr(robotmodel.time, name).__doc__, name
 
 
 def test_msgs_surface() -> None:
