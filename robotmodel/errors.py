@@ -18,6 +18,8 @@ caller (and the CLI) can catch one class and print one line. The tree::
     │                               would not open (see robotmodel.bus)
     ├── MessageError                a message field its ROS type cannot carry, or bytes that
     │                               do not decode as the type (also a ValueError)
+    ├── PublisherError              a state publisher's parameter out of range, e.g.
+    │                               publish_frequency (ROS's text; also a ValueError)
     └── TransformException          tf2's root (see robotmodel.tf)
         ├── LookupException
         ├── ConnectivityException
@@ -45,6 +47,7 @@ __all__ = [
     "LookupException",
     "MessageError",
     "PackageNotFoundError",
+    "PublisherError",
     "ResourceError",
     "RobotModelError",
     "TimeoutException",
@@ -111,6 +114,10 @@ class JointValueError(KinematicsError):
     def __init__(self, message: str, joint: str | None = None) -> None:
         self.joint = joint
         super().__init__(message)
+
+
+class PublisherError(RobotModelError, ValueError):
+    """A state publisher was given a parameter outside its range (ROS's text where ROS has one)."""
 
 
 class BusError(RobotModelError):

@@ -1,11 +1,7 @@
-"""The publishers' error class (joins :mod:`robotmodel.errors`' tree under RobotModelError)."""
+"""The publishers' error class, defined in :mod:`robotmodel.errors` with the rest of the tree."""
 
 from __future__ import annotations
 
-from robotmodel.errors import RobotModelError
+from robotmodel.errors import PublisherError
 
 __all__ = ["PublisherError"]
-
-
-class PublisherError(RobotModelError, ValueError):
-    """A state publisher was given a parameter outside its range (ROS's text where ROS has one)."""
