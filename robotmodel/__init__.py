@@ -1,13 +1,24 @@
 """robotmodel: ROS's robot-model and transform toolchain without ROS.
 
+:func:`load` is the entry point from a ``.urdf``/``.xacro`` file or XML text to a
+:class:`RobotDescription`: it expands xacro documents (and only those: a plain URDF is
+parsed directly, see :mod:`robotmodel.model._load` for the rule) and parses the URDF.
+
 Subpackages, one concern each:
 
-- :mod:`robotmodel.xacro`: xacro expansion with ROS-free package resolution.
+- :mod:`robotmodel.resources`: ROS package lookup and ``package://``/``file://`` URIs.
+- :mod:`robotmodel.xacro`: xacro expansion (in a bounded child process).
 - :mod:`robotmodel.model`: the typed robot description (URDF in, URDF out).
 - :mod:`robotmodel.check`: check_urdf, lint and urdf_to_graphviz.
 - :mod:`robotmodel.kinematics`: forward kinematics on Pinocchio.
 - :mod:`robotmodel.spatial`: rotations and rigid transforms.
 - :mod:`robotmodel.tf`: a tf2-style transform buffer.
+- :mod:`robotmodel.time`: rclpy-style time as integer nanoseconds, and clocks.
+- :mod:`robotmodel.msgs`: ROS 2 message classes and their CDR encoding.
+- :mod:`robotmodel.bus`: a ROS 2 bus in rmw_zenoh's wire format, with rclpy's shape.
+- :mod:`robotmodel.tf_ros`: tf2_ros's broadcasters and listener on the bus.
+- :mod:`robotmodel.publishers`: robot_state_publisher and joint_state_publisher.
+- :mod:`robotmodel.viewer`: meshcat's browser viewer.
 """
 
 from __future__ import annotations
