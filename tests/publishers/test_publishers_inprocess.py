@@ -37,8 +37,7 @@ def other(node: Node, name: str) -> Node:
 def test_arm_through_jsp_rsp_and_a_listener(node):
     desc = load(ARM)
     clock = SimClock(Time(seconds=1000))
-    # The listener first: here the bus delivers synchronously, and this is the order of a
-    # live system where the statics arrive after the listener is up.
+    # The listener is up before the robot starts, as in a live system brought up in order.
     with TransformListener(buffer := Buffer(), node), \
             other(node, "rsp_node") as rsp_node, other(node, "jsp_node") as jsp_node, \
             RobotStatePublisher(desc, bus=rsp_node), \
