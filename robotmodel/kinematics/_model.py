@@ -262,7 +262,9 @@ class KinematicModel:
         values = np.asarray(q, dtype=np.float64)
         if self.nv == 0:
             return np.broadcast_to(self._offset, (*values.shape[:-1], len(self._offset))).copy()
-        out: FloatArray = values[..., self._source] * self._multiplier + self._offset
+        # A mimic multiplier can overflow; callers that need finite values use check_finite.
+        with np.errstate(over="ignore", invalid="ignore"):
+            out: FloatArray = values[..., self._source] * self._multiplier + self._offset
         return out
 
     def configuration(self, q: FloatArray, extra: JointValues | None = None
@@ -279,7 +281,21 @@ class KinematicModel:
                 free[name] = free_or_planar(name, jtype, value)
             elif name in self.mimics:
                 values[self._joint_index[name]] = self._scalar(name, value)
+        self.check_finite(values)
         return values, free
+
+    def check_finite(self, values: FloatArray) -> None:
+        """Raise :class:`JointValueError` naming the first joint whose value ``(..., J)`` is NaN or infinite.
+
+        Only a mimic can get there from finite variables: its multiplier × master overflowed.
+        """
+        if np.isfinite(values).all():
+            return
+        row = int(np.flatnonzero(~np.isfinite(values).reshape(-1, values.shape[-1]).all(axis=0))[0])
+        name = self.table.names[row]
+        rule = self.mimics.get(name)
+        how = f" ({rule.multiplier:g} × {rule.master} + {rule.offset:g})" if rule else ""
+        raise JointValueError(f"joint '{name}': its value{how} is not finite", name)
 
     def pin_configuration(self, q: FloatArray, extra: JointValues | None = None) -> FloatArray:
         """Pinocchio's ``q`` for variable vector ``q`` (floating/planar values from ``extra``)."""

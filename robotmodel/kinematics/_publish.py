@@ -11,6 +11,7 @@ import numpy.typing as npt
 from robotmodel.errors import JointValueError
 from robotmodel.kinematics._joints import KIND_FIXED, KIND_PRISMATIC, KIND_REVOLUTE, local_transforms
 from robotmodel.kinematics._model import KinematicModel
+from robotmodel.kinematics._single import check_poses
 from robotmodel.model import JointType
 from robotmodel.spatial import FloatArray, matrix_to_quat, quats_canonical
 
@@ -123,9 +124,12 @@ def batch_link_poses(model: KinematicModel, q: npt.ArrayLike) -> tuple[FloatArra
     rotations = np.empty((len(model.link_names), n, 3, 3))
     translations = np.empty((len(model.link_names), n, 3))
     # Chunks small enough to stay in cache; each chunk is fully vectorized.
-    for start in range(0, n, _CHUNK):
-        stop = min(n, start + _CHUNK)
-        _batch_chunk(model, configs[start:stop], rotations[:, start:stop], translations[:, start:stop])
+    # Overflow is checked once at the end instead of warned about on the way.
+    with np.errstate(over="ignore", invalid="ignore"):
+        for start in range(0, n, _CHUNK):
+            stop = min(n, start + _CHUNK)
+            _batch_chunk(model, configs[start:stop], rotations[:, start:stop], translations[:, start:stop])
+    check_poses(model.description.name, rotations, translations)
     return rotations, translations
 
 
@@ -138,6 +142,7 @@ def _batch_chunk(model: KinematicModel, configs: FloatArray, rotations: FloatArr
                  translations: FloatArray) -> None:
     n = configs.shape[0]
     values = model.joint_values(configs)
+    model.check_finite(values)
     table = model.table
     link_index = model._link_index
     root = link_index[model.root]

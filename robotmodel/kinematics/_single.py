@@ -13,10 +13,11 @@ from collections.abc import Iterable
 
 import numpy as np
 
+from robotmodel.errors import KinematicsError
 from robotmodel.kinematics._joints import JointTable, local_transforms
 from robotmodel.spatial import FloatArray, quat_to_matrix
 
-__all__ = ["compose_tree", "free_motion"]
+__all__ = ["check_poses", "compose_tree", "free_motion"]
 
 
 def free_motion(floating: bool, value: FloatArray) -> tuple[FloatArray, FloatArray]:
@@ -27,27 +28,38 @@ def free_motion(floating: bool, value: FloatArray) -> tuple[FloatArray, FloatArr
     return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]]), np.array([value[0], value[1], 0.0])
 
 
+def check_poses(robot: str, rotations: FloatArray, translations: FloatArray) -> None:
+    """Raise :class:`KinematicsError` when a pose overflowed: a NaN or infinite pose is never returned."""
+    if np.isfinite(translations).all() and np.isfinite(rotations).all():
+        return
+    raise KinematicsError(
+        f"robot '{robot}': link poses overflow to infinity (origins or joint values too large)")
+
+
 def compose_tree(
     table: JointTable, values: FloatArray, free: dict[int, tuple[FloatArray, FloatArray]],
-    walk: Iterable[tuple[int, int, int]], root: int, n_links: int,
+    walk: Iterable[tuple[int, int, int]], root: int, n_links: int, robot: str,
 ) -> tuple[FloatArray, FloatArray]:
     """T_root_link of every link: rotations ``(L, 3, 3)`` and translations ``(L, 3)``.
 
     ``values`` holds every joint's value (table order); ``free`` the motion of floating
     and planar joints by table row; ``walk`` lists (joint row, parent link, child link)
-    parents first.
+    parents first. Raises :class:`KinematicsError` when a pose overflows.
     """
-    local_r, local_t = local_transforms(table, values)
-    for row, (r, t) in free.items():
-        origin = table.origin_rotation[row]
-        local_r[row] = origin @ r
-        local_t[row] = table.origin_translation[row] + origin @ t
-    rotations = np.empty((n_links, 3, 3))
-    translations = np.empty((n_links, 3))
-    rotations[root] = np.eye(3)
-    translations[root] = 0.0
-    for row, parent, child in walk:
-        r_parent = rotations[parent]
-        np.matmul(r_parent, local_r[row], out=rotations[child])
-        np.add(r_parent @ local_t[row], translations[parent], out=translations[child])
+    # Overflow is checked once at the end instead of warned about on the way.
+    with np.errstate(over="ignore", invalid="ignore"):
+        local_r, local_t = local_transforms(table, values)
+        for row, (r, t) in free.items():
+            origin = table.origin_rotation[row]
+            local_r[row] = origin @ r
+            local_t[row] = table.origin_translation[row] + origin @ t
+        rotations = np.empty((n_links, 3, 3))
+        translations = np.empty((n_links, 3))
+        rotations[root] = np.eye(3)
+        translations[root] = 0.0
+        for row, parent, child in walk:
+            r_parent = rotations[parent]
+            np.matmul(r_parent, local_r[row], out=rotations[child])
+            np.add(r_parent @ local_t[row], translations[parent], out=translations[child])
+    check_poses(robot, rotations, translations)
     return rotations, translations

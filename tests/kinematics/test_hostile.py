@@ -1,8 +1,8 @@
 """Inputs that used to break forward kinematics: long chains, tiny axes, odd names.
 
 The long-chain bound: ``robotmodel fk`` on a 3,000-joint serial chain must peak below
-``FK_RSS_BOUND`` resident memory (the interpreter with NumPy and Pinocchio loaded takes
-about 80 MiB; Pinocchio's Data for such a chain would need about 1.7 TB).
+``FK_RSS_BOUND`` resident memory (measured: about 50 MiB, as fk never imports Pinocchio;
+Pinocchio's Data for such a chain would need about 1.7 TB).
 """
 
 from __future__ import annotations
@@ -20,7 +20,7 @@ from robotmodel.errors import KinematicsError
 from robotmodel.kinematics import PINOCCHIO_DATA_LIMIT, KinematicModel, KinematicState, batch_link_matrices
 from robotmodel.model import parse_urdf
 
-FK_RSS_BOUND = 400 * 2**20
+FK_RSS_BOUND = 160 * 2**20
 
 
 def chain_urdf(n: int) -> str:
