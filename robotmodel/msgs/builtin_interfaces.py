@@ -10,11 +10,13 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import ClassVar
 
+from robotmodel.msgs._base import RosMessage
+
 __all__ = ["Duration", "Time"]
 
 
-@dataclass(slots=True)
-class Time:
+@dataclass(slots=True, repr=False)
+class Time(RosMessage):
     """builtin_interfaces/msg/Time: ``sec`` (int32) and ``nanosec`` (uint32) since the epoch."""
 
     __msgtype__: ClassVar[str] = "builtin_interfaces/msg/Time"
@@ -23,8 +25,8 @@ class Time:
     nanosec: int = 0
 
 
-@dataclass(slots=True)
-class Duration:
+@dataclass(slots=True, repr=False)
+class Duration(RosMessage):
     """builtin_interfaces/msg/Duration: ``sec`` (int32) and ``nanosec`` (uint32, always added)."""
 
     __msgtype__: ClassVar[str] = "builtin_interfaces/msg/Duration"

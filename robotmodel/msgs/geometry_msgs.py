@@ -10,6 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import ClassVar
 
+from robotmodel.msgs._base import RosMessage
 from robotmodel.msgs.std_msgs import Header
 
 __all__ = [
@@ -33,8 +34,8 @@ def _zeros36() -> list[float]:
     return [0.0] * 36
 
 
-@dataclass(slots=True)
-class Vector3:
+@dataclass(slots=True, repr=False)
+class Vector3(RosMessage):
     """geometry_msgs/msg/Vector3: a free vector."""
 
     __msgtype__: ClassVar[str] = "geometry_msgs/msg/Vector3"
@@ -44,8 +45,8 @@ class Vector3:
     z: float = 0.0
 
 
-@dataclass(slots=True)
-class Point:
+@dataclass(slots=True, repr=False)
+class Point(RosMessage):
     """geometry_msgs/msg/Point: a position."""
 
     __msgtype__: ClassVar[str] = "geometry_msgs/msg/Point"
@@ -55,8 +56,8 @@ class Point:
     z: float = 0.0
 
 
-@dataclass(slots=True)
-class Quaternion:
+@dataclass(slots=True, repr=False)
+class Quaternion(RosMessage):
     """geometry_msgs/msg/Quaternion (x, y, z, w); the identity (w = 1) by default, as in ROS 2."""
 
     __msgtype__: ClassVar[str] = "geometry_msgs/msg/Quaternion"
@@ -67,8 +68,8 @@ class Quaternion:
     w: float = 1.0
 
 
-@dataclass(slots=True)
-class Transform:
+@dataclass(slots=True, repr=False)
+class Transform(RosMessage):
     """geometry_msgs/msg/Transform: a translation and a rotation."""
 
     __msgtype__: ClassVar[str] = "geometry_msgs/msg/Transform"
@@ -77,8 +78,8 @@ class Transform:
     rotation: Quaternion = field(default_factory=Quaternion)
 
 
-@dataclass(slots=True)
-class TransformStamped:
+@dataclass(slots=True, repr=False)
+class TransformStamped(RosMessage):
     """geometry_msgs/msg/TransformStamped: the pose of ``child_frame_id`` in ``header.frame_id``."""
 
     __msgtype__: ClassVar[str] = "geometry_msgs/msg/TransformStamped"
@@ -88,8 +89,8 @@ class TransformStamped:
     transform: Transform = field(default_factory=Transform)
 
 
-@dataclass(slots=True)
-class Pose:
+@dataclass(slots=True, repr=False)
+class Pose(RosMessage):
     """geometry_msgs/msg/Pose: a position and an orientation."""
 
     __msgtype__: ClassVar[str] = "geometry_msgs/msg/Pose"
@@ -98,8 +99,8 @@ class Pose:
     orientation: Quaternion = field(default_factory=Quaternion)
 
 
-@dataclass(slots=True)
-class PoseStamped:
+@dataclass(slots=True, repr=False)
+class PoseStamped(RosMessage):
     """geometry_msgs/msg/PoseStamped."""
 
     __msgtype__: ClassVar[str] = "geometry_msgs/msg/PoseStamped"
@@ -108,8 +109,8 @@ class PoseStamped:
     pose: Pose = field(default_factory=Pose)
 
 
-@dataclass(slots=True)
-class PointStamped:
+@dataclass(slots=True, repr=False)
+class PointStamped(RosMessage):
     """geometry_msgs/msg/PointStamped."""
 
     __msgtype__: ClassVar[str] = "geometry_msgs/msg/PointStamped"
@@ -118,8 +119,8 @@ class PointStamped:
     point: Point = field(default_factory=Point)
 
 
-@dataclass(slots=True)
-class Vector3Stamped:
+@dataclass(slots=True, repr=False)
+class Vector3Stamped(RosMessage):
     """geometry_msgs/msg/Vector3Stamped."""
 
     __msgtype__: ClassVar[str] = "geometry_msgs/msg/Vector3Stamped"
@@ -128,8 +129,8 @@ class Vector3Stamped:
     vector: Vector3 = field(default_factory=Vector3)
 
 
-@dataclass(slots=True)
-class PoseWithCovariance:
+@dataclass(slots=True, repr=False)
+class PoseWithCovariance(RosMessage):
     """geometry_msgs/msg/PoseWithCovariance: covariance over (x, y, z, rot X, rot Y, rot Z)."""
 
     __msgtype__: ClassVar[str] = "geometry_msgs/msg/PoseWithCovariance"
@@ -138,8 +139,8 @@ class PoseWithCovariance:
     covariance: list[float] = field(default_factory=_zeros36)
 
 
-@dataclass(slots=True)
-class Twist:
+@dataclass(slots=True, repr=False)
+class Twist(RosMessage):
     """geometry_msgs/msg/Twist: linear and angular velocity."""
 
     __msgtype__: ClassVar[str] = "geometry_msgs/msg/Twist"
@@ -148,8 +149,8 @@ class Twist:
     angular: Vector3 = field(default_factory=Vector3)
 
 
-@dataclass(slots=True)
-class TwistStamped:
+@dataclass(slots=True, repr=False)
+class TwistStamped(RosMessage):
     """geometry_msgs/msg/TwistStamped."""
 
     __msgtype__: ClassVar[str] = "geometry_msgs/msg/TwistStamped"
@@ -158,8 +159,8 @@ class TwistStamped:
     twist: Twist = field(default_factory=Twist)
 
 
-@dataclass(slots=True)
-class TwistWithCovariance:
+@dataclass(slots=True, repr=False)
+class TwistWithCovariance(RosMessage):
     """geometry_msgs/msg/TwistWithCovariance: covariance over (x, y, z, rot X, rot Y, rot Z)."""
 
     __msgtype__: ClassVar[str] = "geometry_msgs/msg/TwistWithCovariance"

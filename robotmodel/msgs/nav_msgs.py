@@ -5,14 +5,15 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import ClassVar
 
+from robotmodel.msgs._base import RosMessage
 from robotmodel.msgs.geometry_msgs import PoseWithCovariance, TwistWithCovariance
 from robotmodel.msgs.std_msgs import Header
 
 __all__ = ["Odometry"]
 
 
-@dataclass(slots=True)
-class Odometry:
+@dataclass(slots=True, repr=False)
+class Odometry(RosMessage):
     """nav_msgs/msg/Odometry: pose in ``header.frame_id``, twist in ``child_frame_id``."""
 
     __msgtype__: ClassVar[str] = "nav_msgs/msg/Odometry"

@@ -5,13 +5,14 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import ClassVar
 
+from robotmodel.msgs._base import RosMessage
 from robotmodel.msgs.builtin_interfaces import Time
 
 __all__ = ["Header", "String"]
 
 
-@dataclass(slots=True)
-class Header:
+@dataclass(slots=True, repr=False)
+class Header(RosMessage):
     """std_msgs/msg/Header: the stamp and the frame a message's data is expressed in."""
 
     __msgtype__: ClassVar[str] = "std_msgs/msg/Header"
@@ -20,8 +21,8 @@ class Header:
     frame_id: str = ""
 
 
-@dataclass(slots=True)
-class String:
+@dataclass(slots=True, repr=False)
+class String(RosMessage):
     """std_msgs/msg/String."""
 
     __msgtype__: ClassVar[str] = "std_msgs/msg/String"

@@ -5,13 +5,14 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import ClassVar
 
+from robotmodel.msgs._base import RosMessage
 from robotmodel.msgs.geometry_msgs import TransformStamped
 
 __all__ = ["TFMessage"]
 
 
-@dataclass(slots=True)
-class TFMessage:
+@dataclass(slots=True, repr=False)
+class TFMessage(RosMessage):
     """tf2_msgs/msg/TFMessage: a batch of transforms."""
 
     __msgtype__: ClassVar[str] = "tf2_msgs/msg/TFMessage"

@@ -83,3 +83,11 @@ def test_ros2_defaults() -> None:
     a.header.stamp.sec = 3
     assert b.name == [] and b.header.stamp.sec == 0  # defaults are never shared
     assert std_msgs.String().data == "" and rosgraph_msgs.Clock().clock == builtin_interfaces.Time()
+
+
+def test_repr_as_rclpy() -> None:
+    assert repr(geometry_msgs.Vector3()) == "geometry_msgs.msg.Vector3(x=0.0, y=0.0, z=0.0)"
+    assert repr(std_msgs.Header(frame_id="map")) == (
+        "std_msgs.msg.Header(stamp=builtin_interfaces.msg.Time(sec=0, nanosec=0), frame_id='map')")
+    assert repr(sensor_msgs.JointState(name=["j"], position=[1.5])).endswith(
+        "name=['j'], position=[1.5], velocity=[], effort=[])")
