@@ -11,13 +11,16 @@
 from __future__ import annotations
 
 import dataclasses
+from pathlib import Path
 
 import numpy as np
+import pinocchio as pin
 import pytest
-from conftest import ERD_ROBOTS
+from conftest import ERD_ROBOTS, erd_urdfs
 
 from robotmodel.errors import JointValueError, UnknownLinkError
 from robotmodel.kinematics import (
+    PINOCCHIO_DATA_LIMIT,
     KinematicModel,
     KinematicState,
     batch_link_matrices,
@@ -156,3 +159,37 @@ def test_planar_and_floating_still_work_without_pinocchio_poses() -> None:
     angle = np.pi / 2 + 0.4 + 0.5
     np.testing.assert_allclose(state.link_matrix("c")[:2, :2],
                                [[np.cos(angle), -np.sin(angle)], [np.sin(angle), np.cos(angle)]], atol=1e-12)
+
+
+ERD = [p for p in erd_urdfs() if p.name != "ur3.urdf"]  # ur3.urdf is an empty robot
+
+
+@pytest.mark.parametrize("path", ERD, ids=lambda p: p.name)
+def test_pinocchio_from_the_file_agrees_with_the_description(path: Path) -> None:
+    # The description (through to_urdf) loses nothing kinematics needs: Pinocchio built
+    # from the file's own text puts every link where our FK and our Pinocchio put it.
+    text = path.read_text(encoding="utf-8")
+    model = KinematicModel(parse_urdf(text))
+    from_file = pin.buildModelFromXML(text)
+    data = from_file.createData()
+    frames = [from_file.getFrameId(name, pin.BODY) for name in model.link_names]
+    state = KinematicState(model)
+    for q in _random_q(model, 3, 5):
+        config = model.pin_configuration(q)
+        assert config.shape == (from_file.nq,)
+        pin.framesForwardKinematics(from_file, data, config)
+        ours = state.update(q).link_matrices()
+        for i, frame in enumerate(frames):
+            np.testing.assert_allclose(ours[i], data.oMf[frame].homogeneous, atol=1e-9,
+                                       err_msg=model.link_names[i])
+        if model.pinocchio_data_bytes < PINOCCHIO_DATA_LIMIT and model.nv:
+            link = model.link_names[-1]
+            theirs = pin.computeFrameJacobian(from_file, data, config, frames[-1], pin.LOCAL_WORLD_ALIGNED)
+            if not model.mimics:
+                np.testing.assert_allclose(state.jacobian(link), _fold(model, from_file, theirs), atol=1e-9)
+
+
+def _fold(model: KinematicModel, pm: object, full: np.ndarray) -> np.ndarray:
+    """Pinocchio's columns of one-DoF joints, in ``model.variables`` order."""
+    cols = [pm.idx_vs[pm.getJointId(name)] for name in model.variables]  # type: ignore[attr-defined]
+    return np.asarray(full).reshape(6, -1)[:, cols]
