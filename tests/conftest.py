@@ -9,8 +9,10 @@ from pathlib import Path
 import pytest
 
 REPO = Path(__file__).resolve().parents[1]
-# The steering repo's shared/ sits beside the checkout, in CI as on a developer's machine.
+# Real robot packages for the corpus tests: $ROBOTMODEL_CORPUS, else shared/corpus beside the
+# checkout. Optional: a fresh clone without it skips those tests (see the corpus fixture).
 CORPUS = Path(os.environ.get("ROBOTMODEL_CORPUS", REPO.parent / "shared" / "corpus"))
+CORPUS_MISSING = f"corpus not found at {CORPUS} (set ROBOTMODEL_CORPUS to run these tests)"
 BUNDLED = REPO / "urdf"
 
 
@@ -36,7 +38,7 @@ def urdfdom_env() -> dict[str, str]:
 
 @pytest.fixture(scope="session")
 def corpus() -> Path:
-    """The ../shared/corpus folder of real xacro packages."""
+    """The corpus folder of real xacro packages; the test skips, with one line saying why, without it."""
     if not CORPUS.is_dir():
-        pytest.fail(f"corpus not found at {CORPUS} (set ROBOTMODEL_CORPUS)")
+        pytest.skip(CORPUS_MISSING)
     return CORPUS

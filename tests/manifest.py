@@ -1,4 +1,4 @@
-"""Rows of ../shared/corpus/MANIFEST.md: the corpus's entry points and their verified results."""
+"""Rows of the corpus's MANIFEST.md: its entry points and their verified results."""
 
 from __future__ import annotations
 

@@ -8,13 +8,14 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
-from conftest import CHECK_URDF_BIN, CORPUS, urdfdom_env
+from conftest import CHECK_URDF_BIN, CORPUS, CORPUS_MISSING, urdfdom_env
 from manifest import entries, negatives
 
 from robotmodel.check import tree_report
 from robotmodel.model import load, parse_urdf
 from robotmodel.xacro import expand
 
+pytestmark = pytest.mark.skipif(not CORPUS.is_dir(), reason=CORPUS_MISSING)  # every test here reads the corpus
 ENTRIES = entries(CORPUS) if CORPUS.is_dir() else []
 NEGATIVES = negatives(CORPUS) if CORPUS.is_dir() else []
 

@@ -8,12 +8,13 @@ import subprocess
 from pathlib import Path
 
 import pytest
-from conftest import CORPUS, URDF_TO_GRAPHVIZ_BIN, urdfdom_env
+from conftest import CORPUS, CORPUS_MISSING, URDF_TO_GRAPHVIZ_BIN, urdfdom_env
 from manifest import entries
 
 from robotmodel.check import to_graphviz, tree_report
 from robotmodel.model import load, parse_urdf, to_urdf
 
+pytestmark = pytest.mark.skipif(not CORPUS.is_dir(), reason=CORPUS_MISSING)  # every test here reads the corpus
 ENTRIES = entries(CORPUS) if CORPUS.is_dir() else []
 
 

@@ -10,7 +10,7 @@ import time
 from pathlib import Path
 
 import pytest
-from conftest import CORPUS, ERD_ROBOTS
+from conftest import ERD_ROBOTS
 from xmlcompare import xml_diff
 
 from robotmodel.errors import PackageNotFoundError, UntrustedInputError, XacroError
@@ -24,8 +24,8 @@ def _cli(*args: str, cwd: Path | None = None) -> subprocess.CompletedProcess[str
                           text=True, cwd=cwd, check=False)
 
 
-def test_pr2_matches_upstream_golden_file() -> None:
-    robots = CORPUS / "xacro" / "xacro" / "test" / "robots" / "pr2"
+def test_pr2_matches_upstream_golden_file(corpus: Path) -> None:
+    robots = corpus / "xacro" / "xacro" / "test" / "robots" / "pr2"
     ours = expand(robots / "pr2.urdf.xacro")
     golden = (robots / "pr2_1.11.4.xml").read_text(encoding="utf-8")
     assert xml_diff(ours, golden) is None
@@ -52,27 +52,27 @@ def test_hector_package_include_matches_shipped_urdf() -> None:
     ["urdf_tutorial/urdf_tutorial/urdf/08-macroed.urdf.xacro", "xacro/xacro/test/A.xacro",
      "xacro/xacro/test/emoji.xacro"],
 )
-def test_cli_output_is_byte_identical_to_xacro(relative: str) -> None:
+def test_cli_output_is_byte_identical_to_xacro(relative: str, corpus: Path) -> None:
     xacro_bin = shutil.which("xacro")
     assert xacro_bin, "the xacro package's console script is missing"
     # Same relative spelling on both sides: the banner quotes the input as given.
-    reference = subprocess.run([xacro_bin, relative], capture_output=True, text=True, cwd=CORPUS, check=True)
-    ours = _cli("xacro", relative, cwd=CORPUS)
+    reference = subprocess.run([xacro_bin, relative], capture_output=True, text=True, cwd=corpus, check=True)
+    ours = _cli("xacro", relative, cwd=corpus)
     assert ours.returncode == 0, ours.stderr
     assert ours.stdout == reference.stdout
 
 
-def test_cli_args_and_output_file(tmp_path: Path) -> None:
-    src = CORPUS / "xacro" / "xacro" / "test" / "test-xacro-cmake" / "test.xacro"
+def test_cli_args_and_output_file(tmp_path: Path, corpus: Path) -> None:
+    src = corpus / "xacro" / "xacro" / "test" / "test-xacro-cmake" / "test.xacro"
     out = tmp_path / "sub" / "out.urdf"
     result = _cli("xacro", str(src), "foo:=1", "bar:=2", "-o", str(out))
     assert result.returncode == 0, result.stderr
     assert '<a bar="2" foo="1"/>' in out.read_text(encoding="utf-8")
 
 
-def test_failed_expansion_leaves_no_output_file(tmp_path: Path) -> None:
+def test_failed_expansion_leaves_no_output_file(tmp_path: Path, corpus: Path) -> None:
     out = tmp_path / "out.urdf"
-    result = _cli("xacro", str(CORPUS / "xacro" / "xacro" / "test" / "broken.xacro"), "-o", str(out))
+    result = _cli("xacro", str(corpus / "xacro" / "xacro" / "test" / "broken.xacro"), "-o", str(out))
     assert result.returncode == 1
     assert "XML parsing error" in result.stderr and "broken.xacro" in result.stderr
     assert len(result.stderr.strip().splitlines()) == 1
@@ -86,9 +86,9 @@ def test_failed_expansion_leaves_no_output_file(tmp_path: Path) -> None:
         ("xacro/xacro/test/subdir/foo.xacro", "unknown macro name: xacro:foo"),
     ],
 )
-def test_upstream_fixtures_that_must_fail(relative: str, needle: str) -> None:
+def test_upstream_fixtures_that_must_fail(relative: str, needle: str, corpus: Path) -> None:
     with pytest.raises(XacroError, match=needle):
-        expand(CORPUS / relative)
+        expand(corpus / relative)
 
 
 def test_missing_input_file_is_a_clean_error() -> None:
@@ -134,9 +134,13 @@ def test_unknown_package_names_package_and_places(tmp_path: Path, monkeypatch: p
     pattern = r"package 'no_such_pkg' not found; searched: .*ROS_PACKAGE_PATH"
     with pytest.raises(PackageNotFoundError, match=pattern):
         find_package("no_such_pkg", start=tmp_path)
-    result = _cli("xacro", str(CORPUS / "husky" / "husky_description" / "urdf" / "husky.urdf.xacro"),
-                  "--package-path", str(tmp_path))
-    assert result.returncode == 0  # explicit paths add to the search, they do not replace it
+    pkg = _package(tmp_path / "repo" / "pkg_h", "pkg_h")
+    (tmp_path / "repo" / ".git").mkdir()
+    (pkg / "r.xacro").write_text(f'<robot {XACRO_NS} name="$(find pkg_h)"/>', encoding="utf-8")
+    (tmp_path / "empty").mkdir()
+    result = _cli("xacro", str(pkg / "r.xacro"), "--package-path", str(tmp_path / "empty"))
+    assert result.returncode == 0, result.stderr  # explicit paths add to the search, they do not replace it
+    assert f'name="{pkg}"' in result.stdout
 
 
 def test_both_find_entry_points_and_package_uri(tmp_path: Path) -> None:
