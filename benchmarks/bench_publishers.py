@@ -2,8 +2,8 @@
 
     python benchmarks/bench_publishers.py [--samples N] [--rates HZ ...] [--seconds S]
 
-Two set-ups on a private loopback bus (own rendezvous port and ROS_DOMAIN_ID), each a
-separate process answering this one:
+Two set-ups run at once on a private loopback bus (own rendezvous port), each in its own
+ROS domain, each a separate process answering this one:
 
 - **bus relay**: a process that takes each JointState off the bus undecoded and puts back
   a ready-made Talos-sized TFMessage (44 transforms, the same frame names) carrying the
@@ -14,7 +14,8 @@ separate process answering this one:
 For each, this process sends a 44-joint JointState (pre-encoded; only the stamp changes)
 and reads the stamp of the /tf message that comes back:
 
-- latency: one message at a time (ping-pong), p50/p99 of send -> /tf received;
+- latency: one message at a time (ping-pong), the two set-ups in turn so that both see the
+  same machine load; p50/p99 of send -> /tf received;
 - rate: joint states paced at each rate for a few seconds (stamps 1 ms apart, so the
   1 kHz cap never throttles), counting what comes back; a rate is sustained when every
   message comes back and the sender kept the pace. Publishers block rather than drop.
@@ -86,11 +87,11 @@ def relay(robot: Path) -> None:
 class Driver:
     """Sends pre-encoded joint states on /joint_states and times the /tf messages that come back."""
 
-    def __init__(self, names: list[str]) -> None:
+    def __init__(self, names: list[str], domain_id: int) -> None:
         from robotmodel.bus import QOS_TF, Node, QoS
         from robotmodel.msgs import JointState, TFMessage, serialize
 
-        self.node = Node("bench_driver")
+        self.node = Node("bench_driver", domain_id=domain_id)
         self.template = serialize(JointState(name=names, position=[0.1] * len(names)))
         self.pub = self.node.create_publisher(JointState, "/joint_states", QoS(100, block=True))
         self.sent: dict[int, int] = {}
@@ -119,16 +120,12 @@ class Driver:
             self.sent.clear()
             self.received.clear()
 
-    def latency(self, samples: int, start_ns: int) -> np.ndarray:
-        """Ping-pong: one joint state, wait for its /tf, next; microseconds per round."""
-        self.reset()
-        out = []
-        for k in range(samples):
-            stamp_ns = start_ns + k * 1_000_000
-            self.send(stamp_ns)
-            if self.wait(stamp_ns, 2.0):
-                out.append((self.received[stamp_ns] - self.sent[stamp_ns]) / 1e3)
-        return np.array(out)
+    def ping(self, stamp_ns: int) -> float | None:
+        """One joint state, then wait for its /tf: microseconds, or None if it never came."""
+        self.send(stamp_ns)
+        if self.wait(stamp_ns, 2.0):
+            return (self.received[stamp_ns] - self.sent[stamp_ns]) / 1e3
+        return None
 
     def rate(self, hz: float, seconds: float, start_ns: int) -> tuple[int, int, float]:
         """Send at ``hz`` for ``seconds``; (sent, came back, achieved send rate)."""
@@ -173,32 +170,56 @@ class Driver:
         self.node.close()
 
 
-def run_setup(label: str, argv: list[str], names: list[str], args: argparse.Namespace,
-              env: dict[str, str]) -> dict[str, Any]:
-    proc = subprocess.Popen(argv, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    driver = None
+def latencies(drivers: list[Driver], samples: int) -> list[np.ndarray]:
+    """Ping-pong samples taken in turn from each set-up, so that both see the same machine load."""
+    out: list[list[float]] = [[] for _ in drivers]
+    for k in range(samples):
+        for i, driver in enumerate(drivers):
+            value = driver.ping(T0 + 10 * _NS + k * 1_000_000)
+            if value is not None:
+                out[i].append(value)
+    return [np.array(v) for v in out]
+
+
+def start(argv: list[str], domain_id: int) -> subprocess.Popen[str]:
+    env = dict(os.environ, ROS_DOMAIN_ID=str(domain_id))
+    return subprocess.Popen(argv, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+
+
+def run(setups: list[tuple[str, list[str]]], names: list[str], args: argparse.Namespace) -> list[dict[str, Any]]:
+    """Both set-ups run at once on one private port, each in its own ROS domain."""
+    first_domain = 100 + os.getpid() % 50
+    procs: list[subprocess.Popen[str]] = []
+    drivers: list[Driver] = []
     try:
-        driver = Driver(names)
-        driver.wait_for_peer()
-        driver.latency(200, T0)  # warm-up
-        lat = driver.latency(args.samples, T0 + 10 * _NS)
-        rates = []
-        for i, hz in enumerate(args.rates):
-            rates.append((hz, *driver.rate(hz, args.seconds, T0 + (100 + 100 * i) * _NS)))
-        return {"label": label, "latency": lat, "rates": rates}
+        for i, (_, argv) in enumerate(setups):
+            procs.append(start(argv, first_domain + i))
+            drivers.append(Driver(names, first_domain + i))
+        for driver in drivers:
+            driver.wait_for_peer()
+        latencies(drivers, 200)  # warm-up
+        lat = latencies(drivers, args.samples)
+        results = []
+        for (label, _), driver, samples in zip(setups, drivers, lat, strict=True):
+            rates = [(hz, *driver.rate(hz, args.seconds, T0 + (100 + 100 * i) * _NS))
+                     for i, hz in enumerate(args.rates)]
+            results.append({"label": label, "latency": samples, "rates": rates})
+        return results
     finally:
-        if driver is not None:
+        for driver in drivers:
             driver.close()
-        proc.send_signal(signal.SIGTERM)
-        try:
-            proc.wait(10)
-        except subprocess.TimeoutExpired:
-            proc.kill()
-            proc.wait()
+        for proc in procs:
+            proc.send_signal(signal.SIGTERM)
+            try:
+                proc.wait(10)
+            except subprocess.TimeoutExpired:
+                proc.kill()
+                proc.wait()
 
 
 def report(results: list[dict[str, Any]], samples: int) -> None:
-    print(f"\njoint_states -> /tf round trip, Talos (44 moving joints), {samples} ping-pong samples:")
+    print(f"\njoint_states -> /tf round trip, Talos (44 moving joints), {samples} ping-pong samples each,")
+    print("taken in turn from the two set-ups (both running):")
     print(f"  {'set-up':<24}{'p50 us':>10}{'p99 us':>10}{'lost':>6}")
     for r in results:
         lat = r["latency"]
@@ -225,7 +246,7 @@ def report(results: list[dict[str, Any]], samples: int) -> None:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--samples", type=int, default=2000)
-    parser.add_argument("--rates", type=float, nargs="+", default=[500, 1000, 2000, 3000])
+    parser.add_argument("--rates", type=float, nargs="+", default=[500, 1000, 2000, 4000, 8000])
     parser.add_argument("--seconds", type=float, default=3.0)
     parser.add_argument("--role", choices=["relay"], help=argparse.SUPPRESS)
     parser.add_argument("--robot", type=Path, default=None, help="URDF (default: example-robot-data's Talos)")
@@ -237,19 +258,15 @@ def main() -> None:
     from robotmodel.kinematics import KinematicModel
 
     names = list(KinematicModel.load(robot).variables)
-    results = []
     setups = [
         ("bus relay", [sys.executable, __file__, "--role", "relay", "--robot", str(robot)]),
         ("robot-state-publisher", [sys.executable, "-m", "robotmodel.cli.main", "robot-state-publisher", str(robot),
                                    "--publish-frequency", "1000"]),
     ]
-    for domain, (label, argv) in enumerate(setups, start=100 + os.getpid() % 50):
-        # Each set-up on its own fresh bus: nothing from the previous one interferes.
-        env = dict(os.environ, ROBOTMODEL_ZENOH_PORT=str(free_port()), ROS_DOMAIN_ID=str(domain))
-        env.pop("ZENOH_SESSION_CONFIG_URI", None)
-        os.environ.update(ROBOTMODEL_ZENOH_PORT=env["ROBOTMODEL_ZENOH_PORT"], ROS_DOMAIN_ID=env["ROS_DOMAIN_ID"])
-        print(f"running {label} ...", flush=True)
-        results.append(run_setup(label, argv, names, args, env))
+    # A private rendezvous port for this run; the two set-ups are told apart by domain.
+    os.environ["ROBOTMODEL_ZENOH_PORT"] = str(free_port())
+    os.environ.pop("ZENOH_SESSION_CONFIG_URI", None)
+    results = run(setups, names, args)
     report(results, args.samples)
 
 
