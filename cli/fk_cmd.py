@@ -49,8 +49,7 @@ def run(args: argparse.Namespace) -> int:
     model = KinematicModel(desc)
     state = KinematicState(model).update(_joint_values(args.joint), clamp=args.clamp)
     links = [args.link] if args.link else list(model.link_names)
-    if args.link and args.link not in model.link_names:
-        raise RobotModelError(f"robot '{desc.name}' has no link '{args.link}'")
+    # An unknown --link is the library's UnknownLinkError, as from every kinematics API.
     poses = {name: state.link_pose(name) for name in links}
     if args.format == "json":
         report = {"root": model.root, "links": {
