@@ -86,8 +86,8 @@ def to_converter(target: type[Any], plan: list[tuple[str, Any, Converter]],
             lo, hi = INT_RANGES[arg[0]]
             args.append(f"(x if type(x := o.{name}) is int and {lo} <= x <= {hi} else k{i}(x))")
         elif kind == 4 and arg[1] == 0 and int(arg[0][0]) == 2:  # an unbounded sequence of messages
-            env[f"k{i}"] = nested(arg[0][1])
-            args.append(f"[k{i}(e) for e in o.{name}]")
+            env[f"n{i}"] = nested(arg[0][1])
+            args.append(f"([n{i}(e) for e in x] if type(x := o.{name}) is list else k{i}(x))")
         else:
             args.append(f"k{i}(o.{name})")
     return _compile("to_" + target.__name__, f"T({', '.join(args)})", env)

@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 import numbers
 import operator
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any, ClassVar, Protocol
 
@@ -136,6 +136,13 @@ def _base_converter(typename: str, bound: int) -> Converter:
     return _int_converter(typename)
 
 
+def _sequence(value: Any, what: str) -> Any:
+    # Sequences only, as rclpy: a generator would be used up by a first, failed attempt.
+    if isinstance(value, str | bytes) or not (isinstance(value, Sequence) or hasattr(value, "__array__")):
+        raise _Bad(f"{value!r} is not a sequence of {what}")
+    return value
+
+
 def _numeric_array_converter(typename: str, length: int, bounded: bool) -> Converter:
     import numpy as np
 
@@ -147,10 +154,8 @@ def _numeric_array_converter(typename: str, length: int, bounded: bool) -> Conve
         if isinstance(value, np.ndarray) and value.ndim == 1 and value.dtype.kind in "fiub":
             items: Any = value
             checked = value.dtype.kind == "f" and is_f64
-        elif isinstance(value, str | bytes):
-            raise _Bad(f"{value!r} is not a sequence of {typename}")
         else:
-            items = list(value)
+            items = list(_sequence(value, typename))
             checked = is_f64 and all(type(item) is float for item in items)
         if (bounded and len(items) > length) or (not bounded and length and len(items) != length):
             raise _Bad(f"{len(items)} elements where {typename}[{'<=' if bounded else ''}{length}] is expected")
@@ -168,10 +173,8 @@ def _numeric_array_converter(typename: str, length: int, bounded: bool) -> Conve
 
 def _list_converter(element: Converter, length: int, bounded: bool, what: str) -> Converter:
     def convert(value: Any) -> list[Any]:
-        if isinstance(value, str | bytes):
-            raise _Bad(f"{value!r} is not a sequence of {what}")
         out = []
-        for i, item in enumerate(value):
+        for i, item in enumerate(_sequence(value, what)):
             try:
                 out.append(element(item))
             except _Bad as exc:

@@ -96,7 +96,10 @@ def _message_items(transforms: list[TransformStamped]) -> Iterator[tuple[int, in
 
 def encode_tfmessage(msg: TFMessage) -> bytes:
     """CDR bytes (with the little-endian encapsulation header) of a TFMessage."""
-    return _encode(_message_items(msg.transforms), len(msg.transforms))
+    transforms = msg.transforms
+    if type(transforms) is not list:
+        raise CannotPack("transforms is not a list")  # the checked path takes other sequences
+    return _encode(_message_items(transforms), len(transforms))
 
 
 def _record_items(records: Iterable[TFRecord]) -> Iterator[tuple[int, int, str, str, Sequence[float]]]:
@@ -105,12 +108,14 @@ def _record_items(records: Iterable[TFRecord]) -> Iterator[tuple[int, int, str, 
         yield sec, nanosec, parent, child, pose
 
 
-def encode_tf_records(records: Sequence[TFRecord]) -> bytes:
+def encode_tf_records(records: Iterable[TFRecord]) -> bytes:
     """CDR bytes of the TFMessage holding ``records``, as :func:`serialize` gives for the message.
 
     Raises :class:`MessageError` naming the record for a value a TFMessage cannot carry
     (a stamp beyond int32 seconds, a pose that is not 7 numbers, a frame that is not a str).
     """
+    if not isinstance(records, list | tuple):
+        records = list(records)
     try:
         return _encode(_record_items(records), len(records))
     except CannotPack:

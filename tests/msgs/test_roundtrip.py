@@ -95,6 +95,9 @@ def _tf_with_stamp(sec: Any, nanosec: Any) -> TFMessage:
     (JointState(position=["1.5"]), r"JointState\.position\[0\]: '1\.5' is not a number"),
     (JointState(name=["a", 3]), r"JointState\.name\[1\]: 3 is not a str$"),
     (JointState(name="abc"), r"JointState\.name: 'abc' is not a sequence of string$"),
+    (JointState(position=5), r"JointState\.position: 5 is not a sequence of float64$"),
+    (JointState(effort=(float(x) for x in "12")), r"JointState\.effort: <generator .*> is not a sequence of float64$"),
+    (TFMessage(transforms=iter([TransformStamped()])), r"transforms: <list_iterator .*> is not a sequence of geometry_"),
     (Odometry(child_frame_id=None), r"^nav_msgs/msg/Odometry\.child_frame_id: None is not a str$"),
     (TFMessage([TransformStamped(), "x"]), r"transforms\[1\]: a str is not a geometry_msgs/msg/TransformStamped"),
     (TFMessage([TransformStamped(child_frame_id=b"x")]), r"transforms\[0\]\.child_frame_id: b'x' is not a str"),
@@ -117,6 +120,7 @@ def test_covariance_needs_36_values() -> None:
 
 def test_sequences_accept_numpy_and_tuples() -> None:
     np = pytest.importorskip("numpy")
+    assert deserialize(serialize(TFMessage((TransformStamped(),))), TFMessage) == TFMessage([TransformStamped()])
     js = JointState(name=("a", "b"), position=np.array([1.0, 2.0]), velocity=np.array([1, 2]), effort=(0.5, 1))
     back = deserialize(serialize(js), JointState)
     assert back == JointState(name=["a", "b"], position=[1.0, 2.0], velocity=[1.0, 2.0], effort=[0.5, 1.0])
