@@ -4,7 +4,9 @@ Each link is a group nested in its parent link's group; the group's transform is
 joint's T_parent_child, so moving a joint sets exactly one transform. Under each link:
 
 - ``<visual>/<i>`` and ``<collision>/<i>``: the geometry, placed by its ``<origin>``;
-- ``<frame>``: an axis triad (x red, y green, z blue) with the link's name.
+- ``<frame>``: an axis triad (x red, y green, z blue) with the link's name, created by
+  the viewer the first time the link's frame is shown (labels are canvas textures, which
+  cost the browser time for every link of a big robot).
 """
 
 from __future__ import annotations
@@ -54,7 +56,7 @@ class RobotScene:
     objects: list[tuple[str, bytes]] = field(default_factory=list)
     #: Transforms that never change: geometry origins.
     transforms: dict[str, bytes] = field(default_factory=dict)
-    #: Initial visibility: collision groups and frames start hidden.
+    #: Initial visibility: collision groups start hidden.
     properties: dict[tuple[str, str], bytes] = field(default_factory=dict)
     #: One message per mesh that could not be loaded.
     warnings: list[str] = field(default_factory=list)
@@ -83,6 +85,7 @@ class _MeshLoader:
         self.cache_dir = cache_dir
         self.progress = progress
         self.loaded: dict[str, MeshData | str] = {}
+        self.packages: dict[str, Path] = {}
         self.cached = 0
 
     def preload(self, uris: list[str]) -> None:
@@ -94,9 +97,19 @@ class _MeshLoader:
         if self.progress:
             self.progress(len(todo), len(todo), "")
 
+    def _resolve(self, uri: str) -> Path:
+        # One package search per package, not per mesh: a big robot names dozens of files.
+        if uri.startswith("package://"):
+            package, sep, rest = uri[len("package://"):].lstrip("/").partition("/")
+            if package and sep:
+                if package not in self.packages:
+                    self.packages[package] = resolve_mesh_uri(f"package://{package}/", self.base, self.package_paths)
+                return self.packages[package] / rest
+        return resolve_mesh_uri(uri, self.base, self.package_paths)
+
     def _load(self, uri: str) -> MeshData | str:
         try:
-            path = resolve_mesh_uri(uri, self.base, self.package_paths)
+            path = self._resolve(uri)
         except RobotModelError as exc:
             return str(exc)
         try:
@@ -138,7 +151,7 @@ def _triad(size: float) -> dict[str, Any]:
 
 def build_scene(desc: RobotDescription, *, package_paths: list[str] | None = None, cache_dir: Path | None = None,
                 progress: ProgressFn | None = None, frame_size: float = 0.1) -> RobotScene:
-    """Build the scene of ``desc``: geometry, colours and frames (joints at their origin).
+    """Build the scene of ``desc``: geometry and colours (joints at their origin).
 
     A mesh that cannot be resolved or read becomes a magenta placeholder box and one
     warning (logged on ``robotmodel.viewer``) naming the link and the path.
@@ -179,12 +192,6 @@ def build_scene(desc: RobotDescription, *, package_paths: list[str] | None = Non
                 scene.transforms[path] = wire.set_transform(path, origin_matrix(origin))
         collision = scene.group(link.name, "collision")
         scene.properties[(collision, "visible")] = wire.set_property(collision, "visible", False)
-        frame = scene.group(link.name, "frame")
-        for sub, command, transform in frame_objects(frame, link.name, frame_size):
-            scene.objects.append((sub, command))
-            if transform is not None:
-                scene.transforms[sub] = transform
-        scene.properties[(frame, "visible")] = wire.set_property(frame, "visible", False)
     scene.meshes_loaded = sum(1 for d in loader.loaded.values() if not isinstance(d, str))
     scene.meshes_cached = loader.cached
     return scene

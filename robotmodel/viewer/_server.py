@@ -46,6 +46,13 @@ def _quiet(handler: tornado.web.RequestHandler) -> None:
     """Request logging off: a viewer's terminal is for its own messages."""
 
 
+class _Asset(tornado.web.StaticFileHandler):
+    def set_extra_headers(self, path: str) -> None:
+        # Cached but revalidated (ETag): a restarted viewer loads meshcat's 850 kB script,
+        # already compiled, from the browser's cache; an upgraded one is fetched again.
+        self.set_header("Cache-Control", "no-cache")
+
+
 class SceneStore:
     """The current scene as meshcat commands: latest object, transform and property per path."""
 
@@ -162,8 +169,8 @@ class ViewerServer:
             app = tornado.web.Application([
                 (r"/", _Page, {"server": self}),
                 (r"/ws", _Socket, {"server": self}),
-                (r"/assets/(.*)", tornado.web.StaticFileHandler, {"path": str(ASSETS)}),
-                (r"/meshcat/(.*)", tornado.web.StaticFileHandler, {"path": str(meshcat_dist())}),
+                (r"/assets/(.*)", _Asset, {"path": str(ASSETS)}),
+                (r"/meshcat/(.*)", _Asset, {"path": str(meshcat_dist())}),
             ], websocket_max_message_size=1 << 20, log_function=_quiet)
             self._http = tornado.httpserver.HTTPServer(app)
             self._http.add_sockets(sockets)

@@ -16,7 +16,7 @@ import numpy.typing as npt
 from robotmodel.kinematics import KinematicModel, KinematicState, joint_transforms, static_transforms
 from robotmodel.model import JointType, RobotDescription
 from robotmodel.viewer import _protocol as wire
-from robotmodel.viewer._scene import ProgressFn, RobotScene, build_scene, origin_matrix
+from robotmodel.viewer._scene import ProgressFn, RobotScene, build_scene, frame_objects, origin_matrix
 from robotmodel.viewer._server import SceneStore, ViewerServer
 from robotmodel.viewer._sliders import SliderJoint, slider_joints
 from robotmodel.viewer._static import static_page
@@ -64,6 +64,8 @@ class Viewer:
         self._last_flush = 0.0
         self._callbacks: list[JointCallback] = []
         self._frames: list[str] = []
+        self._frame_objects: set[str] = set()
+        self._frame_size = 0.1
         self._tf: dict[str, npt.NDArray[np.float64]] = {}
         self._collisions = collisions
         with self._lock:
@@ -258,7 +260,19 @@ class Viewer:
             wanted = names
         self._frames = wanted
         chosen = set(wanted)
-        return self._set_property_commands([(self.scene.group(n, "frame"), n in chosen) for n in links])
+        commands = []
+        for name in wanted:
+            if name in self._frame_objects:
+                continue
+            self._frame_objects.add(name)
+            for sub, command, transform in frame_objects(self.scene.group(name, "frame"), name, self._frame_size):
+                self._store.objects[sub] = command
+                commands.append(command)
+                if transform is not None:
+                    self._store.transforms[sub] = transform
+                    commands.append(transform)
+        shown = [n for n in links if n in self._frame_objects]
+        return commands + self._set_property_commands([(self.scene.group(n, "frame"), n in chosen) for n in shown])
 
     def show_frames(self, frames: FramesSpec = "all") -> None:
         """Show axis triads with names: ``"all"``, ``"none"`` (or None), or an iterable of link names."""
@@ -284,8 +298,6 @@ class Viewer:
 
     def show_tf(self, poses: Mapping[str, npt.ArrayLike]) -> None:
         """Draw TF frames as named triads at world poses (frame name → 4×4 matrix); others are removed."""
-        from robotmodel.viewer._scene import frame_objects
-
         with self._lock:
             commands: list[bytes] = []
             for name in [n for n in self._tf if n not in poses]:

@@ -20,9 +20,9 @@ from livebus import Bus
 from viewerhelpers import HIDE_HELPERS, MESH_COUNT, READY, grey_points, loopback_only, png_pixels, robot_fraction
 
 from robotmodel.model import load
-from robotmodel.viewer import Browser, find_chromium
+from robotmodel.viewer import Browser
 
-pytestmark = pytest.mark.skipif(find_chromium() is None, reason="needs chromium (CI installs it)")
+# No skip without Chromium: CI installs it, and a missing browser must show as a failure.
 
 PANDA = ERD_ROBOTS / "panda_description" / "urdf" / "panda.urdf"
 TALOS = ERD_ROBOTS / "talos_data" / "robots" / "talos_reduced.urdf"

@@ -46,7 +46,7 @@ def _origin(xyz: tuple[float, ...], rpy: tuple[float, ...]) -> np.ndarray:
 
 def test_scene_tree_mirrors_the_kinematic_tree() -> None:
     desc = load(PANDA)
-    _, objects = _decode(Viewer(desc, serve=False))
+    _, objects = _decode(Viewer(desc, serve=False, frames="all"))  # every link then holds an object
     # Each link's group sits inside its parent link's group.
     for _, joint in desc.walk():
         parent = next(p for p in objects if p.split("/<")[0].endswith("/" + joint.parent))

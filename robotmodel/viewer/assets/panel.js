@@ -4,7 +4,8 @@
   "use strict";
   const STEPS = 10000;  // joint_state_publisher_gui's slider resolution
   const viewer = new MeshCat.Viewer(document.getElementById("meshcat-pane"));
-  const state = {connected: false, synced: 0, renders: 0, latencies: [], config: null, positions: {}};
+  const state = {connected: false, synced: 0, renders: 0, latencies: [], config: null, positions: {},
+                 timing: {}};
   window.viewer = viewer;
   window.robotmodel = state;
   const sliders = {};
@@ -114,7 +115,9 @@
   }
 
   function onSynced(message) {
+    if (!state.timing.synced) state.timing.synced = performance.now();
     viewer.render();
+    if (!state.timing.drawn) state.timing.drawn = performance.now();
     state.renders += 1;
     state.synced = message.seq;
     if (message.token != null) {
@@ -138,10 +141,16 @@
   function connect() {
     ws = new WebSocket("ws://" + location.host + "/ws");
     ws.binaryType = "arraybuffer";
-    ws.onopen = () => { state.connected = true; };
+    ws.onopen = () => { state.connected = true; state.timing.open = performance.now(); };
     ws.onmessage = (event) => {
       if (typeof event.data === "string") onText(JSON.parse(event.data));
-      else viewer.handle_command_bytearray(new Uint8Array(event.data));
+      else {
+        if (!state.timing.first) state.timing.first = performance.now();
+        viewer.handle_command_bytearray(new Uint8Array(event.data));
+        // Draw once per batch, when its "synced" marker arrives, not on every animation
+        // frame in between (a software-rendered frame of a big robot costs tens of ms).
+        viewer.needs_render = false;
+      }
     };
     ws.onclose = () => {
       state.connected = false;
