@@ -125,6 +125,9 @@ def session_config(listen: Sequence[str], connect: Sequence[str]) -> zenoh.Confi
     _insert(config, "connect/endpoints", json.dumps(_check_endpoints(connect)))
     _insert(config, "connect/retry", _RETRY)
     _insert(config, "queries_default_timeout", "60000")
+    # zenoh's open() otherwise sometimes idles its whole 500 ms scouting delay although the
+    # link is up; the caller waits for the link itself (see _zenoh.open_session).
+    _insert(config, "scouting/delay", "0")
     return apply_override(config)
 
 

@@ -11,7 +11,10 @@
 
 from __future__ import annotations
 
+import atexit
 import threading
+import time
+import weakref
 from collections.abc import Sequence
 from typing import Any
 
@@ -32,6 +35,8 @@ __all__ = ["ZenohBackend", "open_session"]
 
 # rmw_zenoh's SAMPLE_MISS_DETECTION_HEARTBEAT_PERIOD (500 ms).
 _HEARTBEAT_S = 0.5
+# How long opening waits for its first link before going on without it.
+_LINK_TIMEOUT_S = 2.0
 
 
 def open_session(connect: Sequence[str] = ()) -> zenoh.Session:
@@ -41,16 +46,40 @@ def open_session(connect: Sequence[str] = ()) -> zenoh.Session:
         if user is not None:
             return zenoh.open(user)
         if connect:
-            return zenoh.open(session_config([LOOPBACK_ANY_PORT], connect))
+            return _linked(zenoh.open(session_config([LOOPBACK_ANY_PORT], connect)))
         rendezvous = rendezvous_endpoint()
         try:
             # First on the machine: hold the well-known port for those who come later.
             return zenoh.open(session_config([rendezvous, LOOPBACK_ANY_PORT], []))
         except zenoh.ZError:
             # Taken (a router, or a peer that came first): meet there.
-            return zenoh.open(session_config([LOOPBACK_ANY_PORT], [rendezvous]))
+            return _linked(zenoh.open(session_config([LOOPBACK_ANY_PORT], [rendezvous])))
     except zenoh.ZError as exc:
         raise BusError(f"cannot open a zenoh session: {exc}") from exc
+
+
+def _linked(session: zenoh.Session, timeout: float = _LINK_TIMEOUT_S) -> zenoh.Session:
+    """Return once the session has a peer or a router (so the graph is visible), or at the timeout.
+
+    Past the timeout the session keeps retrying in the background; nothing is lost.
+    """
+    end = time.monotonic() + timeout
+    while time.monotonic() < end:
+        info = session.info
+        if any(True for _ in info.peers_zid()) or any(True for _ in info.routers_zid()):
+            break
+        time.sleep(0.001)
+    return session
+
+
+_LIVE: weakref.WeakSet[ZenohBackend] = weakref.WeakSet()
+
+
+@atexit.register
+def _close_all() -> None:
+    # zenoh can hang the interpreter's exit on a session nobody closed.
+    for backend in list(_LIVE):
+        backend.close()
 
 
 def _to_raw(sample: zenoh.Sample) -> RawSample:
@@ -97,6 +126,7 @@ class ZenohBackend(Backend):
         self._lock = threading.Lock()
         self._handles: list[Handle] = []
         self.closed = False
+        _LIVE.add(self)
 
     @property
     def session(self) -> zenoh.Session:
