@@ -46,7 +46,9 @@ _MESHCAT_LAUNCHER = """
 import sys, tornado.web
 from meshcat.servers import zmqserver
 _listen = tornado.web.Application.listen
-tornado.web.Application.listen = lambda self, port, address="127.0.0.1", **kw: _listen(self, port, address=address, **kw)
+def _loopback(self, port, address="127.0.0.1", **kw):
+    return _listen(self, port, address=address, **kw)
+tornado.web.Application.listen = _loopback
 bridge = zmqserver.ZMQWebSocketBridge(host="127.0.0.1")
 print(f"zmq_url={bridge.zmq_url}", flush=True)
 print(f"web_url={bridge.web_url}", flush=True)

@@ -203,4 +203,4 @@ def frame_objects(path: str, name: str, size: float) -> list[tuple[str, bytes, b
     offset[:3, 3] = (0.0, 0.0, size * 0.3)
     label = f"{path}/label"
     return [(f"{path}/axes", wire.set_object(f"{path}/axes", _triad(size)), None),
-            (label, wire.set_object(label, wire.label_object(name, size * 1.5)), wire.set_transform(label, offset))]
+            (label, wire.set_object(label, wire.label_object(name, size * 3.0)), wire.set_transform(label, offset))]

@@ -102,7 +102,7 @@ class Viewer:
         state = KinematicState(self.model).update(self.model.default_positions())
         points = np.array([state.link_pose(n).translation for n in self.model.link_names])
         radius = float(np.max(np.linalg.norm(points, axis=1))) + 0.2
-        distance = max(0.8, 2.0 * radius)
+        distance = max(0.6, 1.5 * radius)
         direction = np.array([1.0, 0.55, 0.9])  # three.js is Y-up under meshcat's "rotated" node
         return [float(x) for x in direction / np.linalg.norm(direction) * distance]
 
