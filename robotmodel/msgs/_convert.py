@@ -53,6 +53,7 @@ _DTYPES = {"float32": "float32", "float64": "float64", "bool": "bool", "byte": "
            "int32": "int32", "uint64": "uint64", "int64": "int64"}
 
 Converter = Callable[[Any], Any]
+_FLOAT_ONLY = frozenset({float})
 
 
 class _Bad(Exception):
@@ -138,6 +139,8 @@ def _base_converter(typename: str, bound: int) -> Converter:
 
 def _sequence(value: Any, what: str) -> Any:
     # Sequences only, as rclpy: a generator would be used up by a first, failed attempt.
+    if type(value) is list or type(value) is tuple:
+        return value
     if isinstance(value, str | bytes) or not (isinstance(value, Sequence) or hasattr(value, "__array__")):
         raise _Bad(f"{value!r} is not a sequence of {what}")
     return value
@@ -156,7 +159,7 @@ def _numeric_array_converter(typename: str, length: int, bounded: bool) -> Conve
             checked = value.dtype.kind == "f" and is_f64
         else:
             items = list(_sequence(value, typename))
-            checked = is_f64 and all(type(item) is float for item in items)
+            checked = is_f64 and {*map(type, items)} <= _FLOAT_ONLY
         if (bounded and len(items) > length) or (not bounded and length and len(items) != length):
             raise _Bad(f"{len(items)} elements where {typename}[{'<=' if bounded else ''}{length}] is expected")
         if not checked:
@@ -171,8 +174,12 @@ def _numeric_array_converter(typename: str, length: int, bounded: bool) -> Conve
     return convert
 
 
-def _list_converter(element: Converter, length: int, bounded: bool, what: str) -> Converter:
+def _list_converter(element: Converter, length: int, bounded: bool, what: str, plain: type | None) -> Converter:
+    """A list converter; elements of type ``plain`` need no check (unbounded strings)."""
+
     def convert(value: Any) -> list[Any]:
+        if plain is not None and not length and type(value) is list and {*map(type, value)} <= {plain}:
+            return list(value)
         out = []
         for i, item in enumerate(_sequence(value, what)):
             try:
@@ -202,7 +209,8 @@ def _field_converter(store: Typestore, desc: Any) -> Converter:
     if int(sub_kind) == 1 and sub_arg[0] != "string":
         return _numeric_array_converter(sub_arg[0], length, bounded)
     element = _field_converter(store, (sub_kind, sub_arg))
-    return _list_converter(element, length, bounded, sub_arg if int(sub_kind) == 2 else sub_arg[0])
+    plain = str if int(sub_kind) == 1 and sub_arg == ("string", 0) else None
+    return _list_converter(element, length, bounded, sub_arg if int(sub_kind) == 2 else sub_arg[0], plain)
 
 
 _STRUCTS: dict[tuple[int, str], tuple[Typestore, Converter]] = {}
