@@ -9,6 +9,7 @@ from types import TracebackType
 from typing import TYPE_CHECKING, Any
 
 from robotmodel.msgs import TFMessage, decode_tf_records
+from robotmodel.tf_ros._authority import PublisherNames
 from robotmodel.tf_ros._node import OwnedNode
 
 if TYPE_CHECKING:
@@ -21,7 +22,6 @@ DEFAULT_AUTHORITY = "default_authority"
 
 _log = logging.getLogger("robotmodel.tf_ros")
 _WARN_PERIOD_S = 5.0
-_GRAPH_RETRY_S = 0.2
 
 
 class TransformListener:
@@ -57,9 +57,11 @@ class TransformListener:
         del spin_thread
         self.buffer = buffer
         self._authority = authority
-        self._names: dict[bytes, str] = {}
-        # When a GID was last looked for in vain: its publisher's token may still be on its way.
-        self._misses: dict[bytes, float] = {}
+        self._names: PublisherNames | None = None
+        # Which publisher sent the static transform each child frame has now, so that a late
+        # re-attribution never overwrites a newer transform from someone else.
+        self._static_owner: dict[str, bytes] = {}
+        self._static_lock = threading.Lock()
         self._warn_lock = threading.Lock()
         self._last_warning = -1e9
         self._held = 0
@@ -75,7 +77,7 @@ class TransformListener:
             n = self._node.node
             if authority is None:
                 # Start following the graph now, not on the receive thread at the first sample.
-                n.context.graph  # noqa: B018
+                self._names = PublisherNames(n.context.graph)
             self._subs.append(n.create_subscription(TFMessage, "/tf", self._on_tf,
                                                     qos if qos is not None else QOS_TF, raw=True))
             self._subs.append(n.create_subscription(TFMessage, "/tf_static", self._on_tf_static,
@@ -109,12 +111,37 @@ class TransformListener:
             self._warn(f"dropped a message on '{raw.topic}' that does not decode as tf2_msgs/msg/TFMessage: "
                        f"{type(exc).__name__}: {exc}")
             return
-        who = self._who(raw.attachment.gid)
-        if insert is None:
-            (self.static_callback if is_static else self.callback)(msg, who)
+        gid = raw.attachment.gid
+        who = self._who(gid)
+        if not (is_static and self._names is not None):
+            self._insert_all(msg if insert is None else records, who, is_static)
             return
-        for rec in records:
+        items: list[Any] = list(msg.transforms) if insert is None else records
+        with self._static_lock:
+            for item in items:
+                self._static_owner[item.child_frame_id if insert is None else item.child] = gid
+            self._insert_all(msg if insert is None else records, who, True)
+        if who == DEFAULT_AUTHORITY:
+            # Sent once and latched: no later sample will carry the name, so put these in
+            # again under it once the graph shows their publisher.
+            self._names.when_known(gid, lambda name: self._reattribute(gid, items, name))
+
+    def _insert_all(self, data: Any, who: str, is_static: bool) -> None:
+        insert = self._insert
+        if insert is None:
+            (self.static_callback if is_static else self.callback)(data, who)
+            return
+        for rec in data:
             insert(rec.parent, rec.child, rec.stamp_ns, rec.pose, who, is_static)
+
+    def _reattribute(self, gid: bytes, items: list[Any], name: str) -> None:
+        with self._static_lock:
+            for item in items:
+                if self._insert is None:
+                    if self._static_owner.get(item.child_frame_id) == gid:
+                        self.buffer.set_transform_static(item, name)
+                elif self._static_owner.get(item.child) == gid:
+                    self._insert(item.parent, item.child, item.stamp_ns, item.pose, name, True)
 
     def _warn(self, text: str) -> None:
         now = time.monotonic()
@@ -129,23 +156,8 @@ class TransformListener:
     def _who(self, gid: bytes) -> str:
         if self._authority is not None:
             return self._authority
-        name = self._names.get(gid)
-        if name is not None:
-            return name
-        now = time.monotonic()
-        if now - self._misses.get(gid, -1e9) < _GRAPH_RETRY_S:
-            return DEFAULT_AUTHORITY
-        from robotmodel.bus import EntityKind
-
-        for entity in self._node.node.context.graph.entities():
-            if entity.kind is EntityKind.PUBLISHER and entity.gid == gid:
-                self._misses.pop(gid, None)
-                name = self._names[gid] = str(entity.node_fqn)
-                return name
-        # Scanning the graph for every sample of an unknown publisher would cost a lot at high
-        # rates; look again a little later instead.
-        self._misses[gid] = now
-        return DEFAULT_AUTHORITY
+        assert self._names is not None
+        return self._names.name(gid) or DEFAULT_AUTHORITY
 
     def callback(self, data: TFMessage, authority: str = DEFAULT_AUTHORITY) -> None:
         """Insert the transforms of one ``/tf`` message."""
@@ -168,6 +180,8 @@ class TransformListener:
         if self._closed:
             return
         self._closed = True
+        if self._names is not None:
+            self._names.close()
         try:
             self.unregister()
         finally:

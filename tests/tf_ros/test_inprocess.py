@@ -92,3 +92,31 @@ def test_closing_leaves_a_given_node_open_and_closes_an_owned_one(domain):
         owned.close()
         # Its node left the graph with it.
         assert (name, "/") not in observer.get_node_names_and_namespaces()
+
+
+def test_static_sample_before_its_publisher_token_is_reattributed(domain):
+    """A latched transform can arrive before its publisher's liveliness token; it is sent once,
+    so the listener must fix its broadcaster name when the token shows up."""
+    from robotmodel.bus import QOS_TF_STATIC, Attachment, Entity, EntityKind, codec_for, topic_keyexpr
+
+    buffer = Buffer()
+    with TransformListener(buffer, backend="inprocess", domain_id=domain), \
+            Node("late_node", backend="inprocess", domain_id=domain) as node:
+        codec = codec_for(TFMessage)
+        ctx = node.context
+        entity = Entity(domain, ctx.backend.zid, node.node_id, ctx.next_id(), EntityKind.PUBLISHER, "/",
+                        "late_node", "/", "/tf_static", codec.typename, codec.type_hash, QOS_TF_STATIC.resolved())
+        # The sample goes out on the wire first, its token later.
+        raw_pub = ctx.backend.declare_publisher(
+            topic_keyexpr(domain, "/tf_static", codec.typename, codec.type_hash), QOS_TF_STATIC)
+        raw_pub.put(codec.encode(TFMessage([make_transform("world", "cam", (1, 0, 0))])),
+                    Attachment(1, time.time_ns(), entity.gid).encode())
+        assert "broadcaster: 'default_authority'" in buffer.all_frames_as_yaml()
+        token = ctx.backend.declare_token(entity.keyexpr)
+        deadline = time.monotonic() + 10
+        while "broadcaster: '/late_node'" not in buffer.all_frames_as_yaml():
+            assert time.monotonic() < deadline, buffer.all_frames_as_yaml()
+            time.sleep(0.01)
+        assert buffer.lookup_transform("world", "cam", Time()).transform.translation.x == 1.0
+        token.close()
+        raw_pub.close()
