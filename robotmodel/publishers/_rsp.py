@@ -82,6 +82,7 @@ class RobotStatePublisher:
     def _publish_setup(self) -> None:
         self._description_pub.publish(String(data=self.logic.description_text))
         self._tf_static.send_transform(self.logic.fixed_transforms(self.clock.now().nanoseconds))
+        self.logic.log.info("Robot initialized")
 
     # -- driving ----------------------------------------------------------------------------------
     def _on_raw(self, raw: Any) -> None:

@@ -125,7 +125,6 @@ class RobotStateLogic:
         self._templates: dict[tuple[str, ...], TFTemplate] = {}
         self._static = static_transforms(model)
         self._warn.reset()
-        self.log.info("Robot initialized")
 
     def _prefixed(self, transforms: JointTransforms) -> dict[str, tuple[str, str]]:
         prefix = self._prefix

@@ -137,19 +137,26 @@ def test_talos_every_link_reachable_fixed_links_only_from_tf_static(live):
     stop_ok(rsp, jsp, listener)
 
 
-def test_late_joiner_gets_the_xacro_output_byte_for_byte_and_every_static(live, tmp_path):
-    source = tmp_path / "twolink.urdf.xacro"
-    source.write_text(PREFIXED)
-    expected = subprocess.run([sys.executable, "-m", "robotmodel.cli.main", "xacro", str(source), "prefix:=left_"],
+@pytest.mark.parametrize("robot", ["twolink", "talos"])
+def test_late_joiner_gets_the_xacro_output_byte_for_byte_and_every_static(live, tmp_path, robot):
+    if robot == "talos":
+        source, args = TALOS, []
+    else:
+        source, args = tmp_path / "twolink.urdf.xacro", ["prefix:=left_"]
+        source.write_text(PREFIXED)
+    expected = subprocess.run([sys.executable, "-m", "robotmodel.cli.main", "xacro", str(source), *args],
                               capture_output=True, check=True).stdout
-    rsp = live.robotmodel("robot-state-publisher", "prefix:=left_", str(source))
+    desc = load(source, dict(a.split(":=") for a in args))
+    statics = sorted((j.parent, j.child) for j in desc.joints if j.type is JointType.FIXED)
+    rsp = live.robotmodel("robot-state-publisher", *args, str(source))
     rsp.wait_line(r"\[INFO\] \[\d+\.\d{9}\] \[robot_state_publisher\]: Robot initialized", stream="err")
     # The scenario itself: a process that starts two seconds after robot-state-publisher.
     time.sleep(2.0)
     late = live.listener("late")
     rec = wait_record(late, lambda r: "description" in r, 20, "latched description and statics")
     assert rec["description"].encode() == expected
-    assert [tuple(p) for p in rec["static"]] == [("left_upper", "left_tool")]
+    assert [tuple(p) for p in rec["static"]] == statics
+    assert len(statics) == (1 if robot == "twolink" else 15)
     stop_ok(rsp, late)
 
 
