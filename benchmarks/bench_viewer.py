@@ -20,6 +20,8 @@ Run: python benchmarks/bench_viewer.py [--rounds N]
 from __future__ import annotations
 
 import argparse
+import contextlib
+import io
 import statistics
 import subprocess
 import sys
@@ -83,7 +85,8 @@ def pinocchio(browser: Browser) -> float:
         zmq_url = server.stdout.readline().strip().split("=", 1)[1]
         web_url = server.stdout.readline().strip().split("=", 1)[1]
         viz = MeshcatVisualizer(model, collision, visual)
-        viz.initViewer(viewer=meshcat.Visualizer(zmq_url=zmq_url))
+        with contextlib.redirect_stdout(io.StringIO()):  # meshcat prints its URL
+            viz.initViewer(viewer=meshcat.Visualizer(zmq_url=zmq_url))
         viz.loadViewerModel()
         viz.display(pin.neutral(model))
         _wait_drawn(browser, web_url, len(visual.geometryObjects))
