@@ -10,11 +10,11 @@ from types import TracebackType
 from typing import Any
 
 from robotmodel.errors import RobotModelError
-from robotmodel.model import RobotDescription, to_urdf
 from robotmodel.msgs import JointState, String
 from robotmodel.publishers._errors import PublisherError
 from robotmodel.publishers._jsp_joints import FreeJoint
 from robotmodel.publishers._jsp_state import JointStateLogic
+from robotmodel.publishers._source import RobotSource, resolve
 from robotmodel.time import Clock, SystemClock
 
 __all__ = ["JointStatePublisher"]
@@ -28,7 +28,7 @@ class JointStatePublisher:
     Publishes a JointState on ``joint_states`` every ``1/rate`` seconds for every movable
     joint (mimic joints computed), with joint_state_publisher's defaults, ``zeros``, and
     values merged from the ``source_list`` topics (latest value per joint wins). The robot
-    is ``description`` (a :class:`RobotDescription` or URDF text) or, without one, the
+    is ``description`` (a :class:`RobotDescription`, URDF text or a file) or, without one, the
     next message on ``robot_description``; as joint_state_publisher does, it always
     listens there and takes each new description (values reset to their defaults).
 
@@ -40,7 +40,7 @@ class JointStatePublisher:
 
     def __init__(
         self,
-        description: RobotDescription | str | None = None,
+        description: RobotSource | None = None,
         *,
         bus: Any | None = None,
         rate: float = 10.0,
@@ -74,7 +74,7 @@ class JointStatePublisher:
         self._subs: list[Any] = []
         self._pub: Any = None
         if description is not None:
-            text = description if isinstance(description, str) else description.source_text or to_urdf(description)
+            text = resolve(description)[1]
             self.logic.configure(text)
         else:
             self.log.info("Waiting for robot_description to be published on the robot_description topic...")

@@ -7,11 +7,11 @@ import threading
 from types import TracebackType
 from typing import Any
 
-from robotmodel.model import RobotDescription
 from robotmodel.msgs import JointState, String, TFMessage, TransformStamped
 from robotmodel.publishers._jointstate_cdr import CannotDecode, JointStateDecoder
 from robotmodel.publishers._once import Every
 from robotmodel.publishers._rsp_state import RobotStateLogic
+from robotmodel.publishers._source import RobotSource
 from robotmodel.time import Clock, SystemClock
 
 __all__ = ["RobotStatePublisher"]
@@ -34,7 +34,7 @@ class RobotStatePublisher:
 
     def __init__(
         self,
-        description: RobotDescription | str,
+        description: RobotSource,
         *,
         bus: Any | None = None,
         publish_frequency: float = 20.0,
@@ -114,7 +114,7 @@ class RobotStatePublisher:
                 self._tf_pub.publish(TFMessage(transforms=out))
         return out
 
-    def set_description(self, description: RobotDescription | str) -> None:
+    def set_description(self, description: RobotSource) -> None:
         """Take a new robot and republish /robot_description and the fixed transforms, as RSP does.
 
         Raises :class:`robotmodel.errors.URDFError` and keeps the current robot when invalid.

@@ -25,13 +25,14 @@ import math
 from collections.abc import Sequence
 
 from robotmodel.kinematics import JointTransforms, KinematicModel, joint_transforms, static_transforms
-from robotmodel.model import JointType, RobotDescription, parse_urdf, to_urdf
+from robotmodel.model import JointType
 from robotmodel.msgs.builtin_interfaces import Time
 from robotmodel.msgs.geometry_msgs import Quaternion, Transform, TransformStamped, Vector3
 from robotmodel.msgs.sensor_msgs import JointState
 from robotmodel.msgs.std_msgs import Header
 from robotmodel.publishers._errors import PublisherError
 from robotmodel.publishers._once import WarnOnce
+from robotmodel.publishers._source import RobotSource, resolve
 from robotmodel.publishers._tf_cdr import TFTemplate
 
 __all__ = ["RobotStateLogic", "check_publish_frequency"]
@@ -56,14 +57,14 @@ def _interval_ns(hz: float) -> int:
 class RobotStateLogic:
     """The transforms robot_state_publisher would publish, computed on call.
 
-    ``description`` is a :class:`RobotDescription` or URDF text (what goes on
-    /robot_description: the text is kept byte for byte). Times are integer nanoseconds;
+    ``description`` is a :class:`RobotDescription`, URDF text (kept byte for byte for
+    /robot_description) or a .urdf/.xacro path. Times are integer nanoseconds;
     the caller passes "now" so that tests can drive the clock.
     """
 
     def __init__(
         self,
-        description: RobotDescription | str,
+        description: RobotSource,
         *,
         publish_frequency: float = 20.0,
         frame_prefix: str = "",
@@ -103,14 +104,9 @@ class RobotStateLogic:
         self._templates.clear()
 
     # -- the robot --------------------------------------------------------------------------------
-    def setup(self, description: RobotDescription | str) -> None:
+    def setup(self, description: RobotSource) -> None:
         """Take a (new) robot; raises :class:`robotmodel.errors.URDFError` and keeps the old one if invalid."""
-        if isinstance(description, str):
-            text = description
-            desc = parse_urdf(text)
-        else:
-            desc = description
-            text = description.source_text or to_urdf(description)
+        desc, text = resolve(description)
         model = KinematicModel(desc)
         for joint in desc.joints:
             if joint.type in (JointType.PLANAR, JointType.FLOATING):

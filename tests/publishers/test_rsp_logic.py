@@ -276,3 +276,12 @@ def test_talos_every_link_from_one_message_plus_statics():
     state = KinematicState(model).update(values)
     for link in model.link_names:
         np.testing.assert_allclose(poses[link], state.link_matrix(link), atol=1e-9)
+
+
+def test_a_path_is_expanded_and_published_as_xacro_prints_it():
+    from robotmodel.xacro import expand
+
+    for source in (ARM, str(ARM)):
+        rsp = RobotStateLogic(source)
+        assert rsp.description_text == expand(ARM)
+        assert rsp.description.name == "arm"
