@@ -44,8 +44,6 @@ _CLASSES: dict[str, type[Any]] = {
     for module in (builtin_interfaces, std_msgs, geometry_msgs, sensor_msgs, nav_msgs, tf2_msgs, rosgraph_msgs)
     for cls in (getattr(module, name) for name in module.__all__)
 }
-_FROM: dict[type[Any], Converter] = {}
-
 _FLOAT32_MAX = 3.4028234663852886e38
 # numpy dtype names of ROS primitive types; numpy is imported when a converter is first built.
 _DTYPES = {"float32": "float32", "float64": "float64", "bool": "bool", "byte": "uint8", "char": "uint8",
@@ -54,6 +52,7 @@ _DTYPES = {"float32": "float32", "float64": "float64", "bool": "bool", "byte": "
 
 Converter = Callable[[Any], Any]
 _FLOAT_ONLY = frozenset({float})
+_FROM: dict[type[Any], Converter] = {}
 
 
 class _Bad(Exception):
@@ -118,11 +117,12 @@ def _bool_converter(value: Any) -> bool:
 
 def _string_converter(bound: int) -> Converter:
     def convert(value: Any) -> str:
-        if type(value) is not str:
+        if not isinstance(value, str):
             raise _Bad(f"{value!r} is not a str")
-        if bound and len(value.encode()) > bound:
-            raise _Bad(f"string of {len(value.encode())} bytes exceeds its bound of {bound}")
-        return value
+        text = str.__str__(value)  # a subclass's characters (numpy.str_, a str Enum), not its str()
+        if bound and len(text.encode()) > bound:
+            raise _Bad(f"string of {len(text.encode())} bytes exceeds its bound of {bound}")
+        return text
 
     return convert
 

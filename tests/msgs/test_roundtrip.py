@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import enum
 import math
 import struct
 from typing import Any
@@ -125,6 +126,15 @@ def test_sequences_accept_numpy_and_tuples() -> None:
     back = deserialize(serialize(js), JointState)
     assert back == JointState(name=["a", "b"], position=[1.0, 2.0], velocity=[1.0, 2.0], effort=[0.5, 1.0])
     assert all(type(v) is float for v in back.position + back.effort)
+
+
+def test_str_subclasses_give_their_characters() -> None:
+    class Frame(str, enum.Enum):  # noqa: UP042 - a str mixin, whose str() is "Frame.MAP"
+        MAP = "map"
+
+    t = make_transform(Frame.MAP, "base")  # type: ignore[arg-type]
+    assert deserialize(serialize(TFMessage([t])), TFMessage).transforms[0].header.frame_id == "map"
+    assert deserialize(serialize(t), TransformStamped).header.frame_id == "map"
 
 
 def test_non_finite_floats_survive() -> None:
