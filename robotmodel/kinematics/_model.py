@@ -166,6 +166,11 @@ class KinematicModel:
         self._origin_identity = [bool(np.array_equal(r, np.eye(3))) for r in self.table.origin_rotation]
 
     @cached_property
+    def _all_rows(self) -> CycleTables:
+        """The publishing cycle's constants for every joint (fixed ones give their origin)."""
+        return CycleTables.build(self.table, list(range(len(self.table.names))))
+
+    @cached_property
     def _pinocchio(self) -> PinocchioModel:
         unit = {name: (float(a[0]), float(a[1]), float(a[2]))
                 for name, kind, a in zip(self.table.names, self.table.kinds, self.table.axis, strict=True)

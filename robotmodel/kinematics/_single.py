@@ -1,7 +1,8 @@
 """Forward kinematics of one configuration in O(joints) time and memory, without Pinocchio.
 
-Every joint's local transform comes from the same tables as robot_state_publisher's and
-batch FK (``_joints.local_transforms``); they are composed parents-first along the tree.
+Every joint's local transform comes from the same constants as robot_state_publisher's
+cycle (``_fast.CycleTables``, a few array operations for all joints); they are composed
+parents-first along the tree.
 Floating joints take ``x y z qx qy qz qw`` and planar joints ``x y θ`` (a translation in
 the joint's xy plane, then a turn about its z axis), as Pinocchio reads them.
 """
@@ -14,7 +15,8 @@ from collections.abc import Iterable
 import numpy as np
 
 from robotmodel.errors import KinematicsError
-from robotmodel.kinematics._joints import JointTable, local_transforms
+from robotmodel.kinematics._fast import CycleTables
+from robotmodel.kinematics._joints import JointTable
 from robotmodel.spatial import FloatArray, quat_to_matrix
 
 __all__ = ["check_poses", "compose_tree", "free_motion"]
@@ -37,18 +39,20 @@ def check_poses(robot: str, rotations: FloatArray, translations: FloatArray) -> 
 
 
 def compose_tree(
-    table: JointTable, values: FloatArray, free: dict[int, tuple[FloatArray, FloatArray]],
+    table: JointTable, tables: CycleTables, values: FloatArray, free: dict[int, tuple[FloatArray, FloatArray]],
     walk: Iterable[tuple[int, int, int]], root: int, n_links: int, robot: str,
 ) -> tuple[FloatArray, FloatArray]:
     """T_root_link of every link: rotations ``(L, 3, 3)`` and translations ``(L, 3)``.
 
-    ``values`` holds every joint's value (table order); ``free`` the motion of floating
-    and planar joints by table row; ``walk`` lists (joint row, parent link, child link)
-    parents first. Raises :class:`KinematicsError` when a pose overflows.
+    ``tables`` are the publishing cycle's constants for every row of ``table`` (fixed rows
+    give their origin); ``values`` holds every joint's value (table order); ``free`` the
+    motion of floating and planar joints by table row; ``walk`` lists (joint row, parent
+    link, child link) parents first. Raises :class:`KinematicsError` when a pose overflows.
     """
     # Overflow is checked once at the end instead of warned about on the way.
     with np.errstate(over="ignore", invalid="ignore"):
-        local_r, local_t = local_transforms(table, values)
+        local_t, quats = tables.evaluate(values)
+        local_r = quat_to_matrix(quats)
         for row, (r, t) in free.items():
             origin = table.origin_rotation[row]
             local_r[row] = origin @ r
