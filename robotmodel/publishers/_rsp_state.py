@@ -210,8 +210,8 @@ class RobotStateLogic:
                             'Robot state publisher ignored a JointState message about joint(s) "%s"(,...) '
                             "whose position member was empty.", names[0])
         else:
-            self._warn.once("invalid", "Robot state publisher ignored an invalid JointState message "
-                            "(%d names, %d positions)", len(names), len(positions), level=logging.ERROR)
+            self._warn.once("invalid", "Robot state publisher ignored an invalid JointState message",
+                            level=logging.ERROR)
 
     def _say_unknown(self, unknown: list[str]) -> None:
         counts = self._warn.counts
