@@ -3,17 +3,24 @@
 Search order (closest first), as a ROS user expects from ``$(find pkg)``:
 
 1. explicit package paths (``--package-path``), each a package or a folder of packages;
-2. the input's own tree, never beyond its *bound*: each folder from the input's up to
-   the bound, nearest first, crawled a few levels down for a ``package.xml`` whose
-   ``<name>`` matches (so a repository's own copy of a package wins over a same-named
-   one elsewhere), or holding an ament resource index naming it (an install prefix).
+2. beside the input, never beyond its *bound*:
+
+   a. the packages the input lies in (ancestors holding a ``package.xml`` of that name);
+   b. the ament resource index of any ancestor (the install prefix the input lies in; a
+      lookup, no crawl), as ROS resolves installed packages;
+   c. each folder from the input's up to the bound, nearest first, crawled a few levels
+      down for a ``package.xml`` whose ``<name>`` matches (so a repository's own copy of
+      a package wins over a same-named one elsewhere).
+
    The bound is the input's workspace (the nearest ancestor holding ``.catkin_workspace``,
    ``.catkin_tools``, ``install/.colcon_install_layout``, ``install/setup.sh``,
    ``devel/setup.sh`` or ``build/COLCON_IGNORE``), else its repository (the nearest
    ancestor holding ``.git``), else the folder holding its package chain (the parent of
-   the outermost ancestor holding a ``package.xml``). ``/``, ``$HOME`` and the system
-   temporary folder are never a bound (a package directly in one of them bounds
-   itself); a file with none of these around it has no own-tree search;
+   the outermost ancestor holding a ``package.xml``). Ancestors are only looked at below
+   ``/``, ``$HOME``, the system temporary folder and any ``site-packages`` or
+   ``dist-packages`` folder, so none of those is ever a bound (a package directly in one
+   of them bounds itself). A file with no workspace, repository or package around it
+   gets no crawl at all;
 3. ``ROS_PACKAGE_PATH`` (ROS 1), crawled;
 4. ``AMENT_PREFIX_PATH`` (ROS 2 ament resource index);
 5. colcon ``install/`` trees of the folders within the bound and of the working directory.
@@ -49,6 +56,8 @@ _WORKSPACE_MARKERS = (
     ".catkin_workspace", ".catkin_tools", "install/.colcon_install_layout", "install/setup.sh",
     "devel/setup.sh", "build/COLCON_IGNORE",
 )
+# Folders of installed Python packages: shared by unrelated projects, so never searched beside an input.
+_ENVIRONMENTS = ("site-packages", "dist-packages")
 _NAME_RE = re.compile(r"<name>\s*([^<\s]+)\s*</name>")
 
 
@@ -150,16 +159,22 @@ class _Bound(NamedTuple):
 
 
 def _upward(folder: Path) -> Iterator[Path]:
-    """``folder`` and its ancestors, stopping before ``/`` and ``$HOME``."""
+    """``folder`` and its ancestors, stopping before ``/``, ``$HOME``, the temp folder and site-packages."""
     shared = _never_a_bound()
     for anc in [folder, *folder.parents]:
-        if anc in shared or anc == Path(anc.anchor):
+        if anc in shared or anc == Path(anc.anchor) or anc.name in _ENVIRONMENTS:
             return
         yield anc
 
 
 def _bound(folder: Path) -> _Bound | None:
     """The outermost folder the search beside an input in ``folder`` may reach (see the module doc)."""
+    return _cached_bound(folder, frozenset(_never_a_bound()))
+
+
+@lru_cache(maxsize=256)
+def _cached_bound(folder: Path, shared: frozenset[Path]) -> _Bound | None:
+    del shared  # part of the cache key only: $HOME may change between calls
     chain = list(_upward(folder))
     for anc in chain:
         if any((anc / marker).exists() for marker in _WORKSPACE_MARKERS):
@@ -205,6 +220,28 @@ def _found(name: str, folder: Path, how: str) -> Path:
     return folder
 
 
+def _beside(name: str, folder: Path) -> tuple[tuple[Path, str] | None, list[Path], str]:
+    """Search the input's own tree (step 2): (hit and why, the folders within the bound, where looked)."""
+    bound = _bound(folder)
+    own = list(_within(folder, bound.folder)) if bound is not None else []
+    where = (f"the input's {bound.kind} {bound.folder}" if bound is not None
+             else f"nothing beside the input (no workspace, repository or package around {folder})")
+    # The packages the input is in first: no crawl needed for the commonest case.
+    for anc in own:
+        if (anc / "package.xml").is_file() and _package_name(anc / "package.xml") == name:
+            return (anc, where), own, where
+    # The install prefix the input lies in, as ROS resolves it: an index lookup, even above the bound.
+    for anc in _upward(folder):
+        found = _from_ament(name, [str(anc)])
+        if found:
+            return (found, f"the ament index of the input's install prefix {anc}"), own, where
+    for anc in own:
+        found = _in_crawl(name, anc, _ANCESTOR_DEPTH)
+        if found:
+            return (found, where), own, where
+    return None, own, where
+
+
 def find_package(
     name: str, *, start: PathLike | None = None, package_paths: Sequence[PathLike] = ()
 ) -> Path:
@@ -225,18 +262,10 @@ def find_package(
     if start is not None:
         start_path = Path(start).resolve()
         folder = start_path if start_path.is_dir() else start_path.parent
-        bound = _bound(folder)
-        if bound is None:
-            searched.append(f"nothing beside the input (no workspace, repository or package around {folder})")
-        else:
-            where = f"the input's {bound.kind} {bound.folder}"
-            own = list(_within(folder, bound.folder))
-            for anc in own:
-                # An installed package lives in <prefix>/share/<pkg>, indexed by its prefix.
-                found = _in_crawl(name, anc, _ANCESTOR_DEPTH) or _from_ament(name, [str(anc)])
-                if found:
-                    return _found(name, found, where)
-            searched.append(where)
+        hit, own, where = _beside(name, folder)
+        if hit is not None:
+            return _found(name, *hit)
+        searched.append(where)
     ros_path = [p for p in os.environ.get("ROS_PACKAGE_PATH", "").split(os.pathsep) if p]
     for root_str in ros_path:
         found = _in_crawl(name, Path(root_str), 8)

@@ -120,3 +120,26 @@ def test_verbose_says_which_copy_was_used(tmp_path: Path) -> None:
         quiet = subprocess.run([sys.executable, "-m", "robotmodel.cli.main", *command, str(xacro_doc)],
                                capture_output=True, text=True, cwd=tmp_path, check=False)
         assert line not in quiet.stderr
+
+
+def test_installed_environment_is_not_searched(tmp_path: Path) -> None:
+    # A virtualenv inside a git checkout (as pyenv is): the checkout does not bound an installed file.
+    (tmp_path / "tool" / ".git").mkdir(parents=True)
+    site = tmp_path / "tool" / "lib" / "python3.11" / "site-packages"
+    _package(tmp_path / "tool" / "stray_pkg", "stray_pkg")
+    installed = _package(site / "robots_pkg", "robots_pkg")
+    entry = _entry(installed / "urdf")
+    assert find_package("robots_pkg", start=entry) == installed
+    with pytest.raises(PackageNotFoundError):
+        find_package("stray_pkg", start=entry)
+
+
+def test_the_install_prefix_the_input_lies_in(tmp_path: Path) -> None:
+    # As example-robot-data installs: <prefix>/share/<dir>, named in the prefix's ament index.
+    prefix = tmp_path / "prefix"
+    index = prefix / "share" / "ament_index" / "resource_index" / "packages"
+    index.mkdir(parents=True)
+    (index / "robot-data").write_text("")
+    (prefix / "share" / "robot-data").mkdir()
+    entry = _entry(_package(prefix / "share" / "robot-data", "robot_data_descriptions") / "robots" / "r")
+    assert find_package("robot-data", start=entry) == prefix / "share" / "robot-data"
