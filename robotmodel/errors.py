@@ -20,6 +20,8 @@ caller (and the CLI) can catch one class and print one line. The tree::
     │                               do not decode as the type (also a ValueError)
     ├── PublisherError              a state publisher's parameter out of range, e.g.
     │                               publish_frequency (ROS's text; also a ValueError)
+    ├── ViewerError                 the viewer: no browser for a screenshot, a port in use, a
+    │                               page that did not load (see robotmodel.viewer)
     └── TransformException          tf2's root (see robotmodel.tf)
         ├── LookupException
         ├── ConnectivityException
@@ -57,6 +59,7 @@ __all__ = [
     "UnknownJointError",
     "UnknownLinkError",
     "UntrustedInputError",
+    "ViewerError",
     "XacroError",
 ]
 
@@ -118,6 +121,10 @@ class JointValueError(KinematicsError):
 
 class PublisherError(RobotModelError, ValueError):
     """A state publisher was given a parameter outside its range (ROS's text where ROS has one)."""
+
+
+class ViewerError(RobotModelError):
+    """The viewer could not do what was asked: no browser found, a port in use, a page that did not load."""
 
 
 class BusError(RobotModelError):

@@ -9,8 +9,8 @@
 
 from __future__ import annotations
 
+from robotmodel.errors import ViewerError
 from robotmodel.viewer._browser import Browser, find_chromium
-from robotmodel.viewer._errors import ViewerError
 from robotmodel.viewer._meshes import MeshData, default_cache_dir, load_mesh
 from robotmodel.viewer._scene import RobotScene, build_scene
 from robotmodel.viewer._screenshot import screenshot, screenshot_html

@@ -21,7 +21,7 @@ import time
 from pathlib import Path
 from typing import Any
 
-from robotmodel.viewer._errors import ViewerError
+from robotmodel.errors import ViewerError
 
 __all__ = ["Browser", "find_chromium"]
 

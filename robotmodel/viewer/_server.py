@@ -25,7 +25,7 @@ import tornado.web
 import tornado.websocket
 from tornado.ioloop import IOLoop
 
-from robotmodel.viewer._errors import ViewerError
+from robotmodel.errors import ViewerError
 
 __all__ = ["ASSETS", "SceneStore", "ViewerServer", "meshcat_dist"]
 

@@ -13,6 +13,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
+from robotmodel.errors import UnknownLinkError
 from robotmodel.kinematics import KinematicModel, KinematicState, joint_transforms, static_transforms
 from robotmodel.model import JointType, RobotDescription
 from robotmodel.viewer import _protocol as wire
@@ -183,6 +184,9 @@ class Viewer:
         self._last_flush = time.monotonic()
         if self._server is not None:
             self._server.broadcast(commands, pending[1])
+            if pending[1] is None:
+                # Not from a slider (Python, or /joint_states): the sliders show it too.
+                self._server.broadcast_text({"type": "positions", "positions": pending[0]})
 
     def _apply(self, positions: Mapping[str, float]) -> list[bytes]:
         """Update the stored joint transforms; returns the commands for those that changed."""
@@ -254,9 +258,7 @@ class Viewer:
             names = [frames] if isinstance(frames, str) else list(frames)
             unknown = [n for n in names if n not in self.scene.link_paths]
             if unknown:
-                from robotmodel.viewer._errors import ViewerError
-
-                raise ViewerError(f"robot '{self.description.name}' has no link '{unknown[0]}'")
+                raise UnknownLinkError(self.description.name, unknown[0])
             wanted = names
         self._frames = wanted
         chosen = set(wanted)
