@@ -4,6 +4,8 @@
   quaternion) for Panda and Talos, against yourdfpy (update_cfg + get_transform per joint)
   and against raw Pinocchio (framesForwardKinematics + every link pose copied to NumPy).
 - Batch FK throughput for Panda (all link poses) against a Pinocchio Python loop.
+- Long serial chains: our single-configuration FK (time, peak traced memory) against
+  Pinocchio's createData + framesForwardKinematics where its nv³ Data still fits.
 
 Targets: >=30x yourdfpy, <=1.5x the raw-Pinocchio floor, batch >=1M configs/s and >=10x the loop.
 Run: python benchmarks/bench_kinematics.py
@@ -21,7 +23,14 @@ import numpy as np
 import pinocchio as pin
 import yourdfpy
 
-from robotmodel.kinematics import KinematicModel, batch_link_matrices, batch_link_poses, joint_transforms
+from robotmodel.kinematics import (
+    PINOCCHIO_DATA_LIMIT,
+    KinematicModel,
+    KinematicState,
+    batch_link_matrices,
+    batch_link_poses,
+    joint_transforms,
+)
 from robotmodel.model import parse_urdf
 
 ROBOTS = Path(sysconfig.get_paths()["purelib"]) / "cmeel.prefix" / "share" / "example-robot-data" / "robots"
@@ -113,7 +122,54 @@ def batch_fk() -> None:
           f"as N x L x 4 x 4 matrices {1 / as_matrices:12,.0f} configs/s")
 
 
+def chain_urdf(n: int) -> str:
+    """A serial chain of ``n`` revolute joints."""
+    links = "".join(f'<link name="l{i}"/>' for i in range(n + 1))
+    joints = "".join(
+        f'<joint name="j{i}" type="revolute"><parent link="l{i}"/><child link="l{i + 1}"/>'
+        '<origin xyz="0 0 0.1" rpy="0.1 0 0"/><axis xyz="0 0 1"/>'
+        '<limit effort="1" velocity="1" lower="-3" upper="3"/></joint>' for i in range(n))
+    return f'<robot name="chain">{links}{joints}</robot>'
+
+
+def _chain_line(n: int) -> str:
+    import tracemalloc
+
+    model = KinematicModel(parse_urdf(chain_urdf(n)))
+    q = np.full(n, 0.1)
+    tracemalloc.start()
+    state = KinematicState(model)
+    state.update(q).link_matrices()
+    peak = tracemalloc.get_traced_memory()[1]
+    tracemalloc.stop()
+    ours = per_call(lambda: state.update(q).link_matrices(), min_time=0.3)
+    line = f"chain of {n:4d} joints: ours {ours * 1e3:7.2f} ms, {peak / 2**20:5.1f} MiB traced"
+    if model.pinocchio_data_bytes > PINOCCHIO_DATA_LIMIT:
+        return line + (f" | Pinocchio Data would be ~{model.pinocchio_data_bytes / 2**20:,.0f} MiB: refused "
+                       f"(limit {PINOCCHIO_DATA_LIMIT / 2**20:.0f} MiB)")
+    pm = model.pin_model
+    start = time.perf_counter()
+    data = pm.createData()
+    created = time.perf_counter() - start
+    config = model.pin_configuration(q)
+    frames = [pm.getFrameId(name, pin.BODY) for name in model.link_names]
+
+    def pinocchio_fk() -> None:
+        pin.framesForwardKinematics(pm, data, config)
+        np.stack([data.oMf[f].homogeneous for f in frames])
+
+    theirs = per_call(pinocchio_fk, min_time=0.3)
+    return line + (f" | Pinocchio createData {created * 1e3:7.1f} ms (Data ~{model.pinocchio_data_bytes / 2**20:,.0f}"
+                   f" MiB), FK+extract {theirs * 1e3:6.2f} ms -> ours/theirs {ours / theirs:4.2f}")
+
+
+def long_chains() -> None:
+    for n in (100, 150, 500, 3000):
+        print(_chain_line(n))
+
+
 if __name__ == "__main__":
     rsp_cycle(PANDA)
     rsp_cycle(TALOS)
     batch_fk()
+    long_chains()
