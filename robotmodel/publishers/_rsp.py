@@ -65,7 +65,7 @@ class RobotStatePublisher:
             raise
 
     def _open(self, subscribe: bool) -> None:
-        from robotmodel.bus import QOS_LATCHED, QOS_TF, QoS, Reliability
+        from robotmodel.bus import QOS_LATCHED, QOS_TF, QoS, Reliability, codec_for
         from robotmodel.tf_ros import StaticTransformBroadcaster
 
         node = self.node
@@ -77,6 +77,7 @@ class RobotStatePublisher:
         if subscribe:
             # rclcpp's SensorDataQoS: best effort, keep last 5, volatile.
             sensor = QoS(5, reliability=Reliability.BEST_EFFORT)
+            self._codec = codec_for(JointState)  # set before samples can arrive on the bus's thread
             self._sub = node.create_subscription(JointState, "joint_states", self._on_raw, sensor, raw=True)
 
     def _publish_setup(self) -> None:
@@ -91,7 +92,7 @@ class RobotStatePublisher:
             msg = self._decoder.decode(raw.payload)
         except CannotDecode:
             try:
-                msg = self._sub.codec.decode(raw.payload)
+                msg = self._codec.decode(raw.payload)
             except Exception as exc:  # any decoder failure means a bad payload: drop it, never crash
                 self._bad_payload.warn("dropped a message on '%s' that does not decode as sensor_msgs/msg/"
                                        "JointState: %s: %s", raw.topic, type(exc).__name__, exc)

@@ -13,6 +13,10 @@ Follows ROS 2 Jazzy's robot_state_publisher (3.3.3):
   ``ignore_timestamp`` publishes every message. 0 Hz means no cap.
 - ``frame_prefix`` is prepended verbatim to every frame id, static ones included.
 
+Mimic chains resolve whatever their joints' names (robot_state_publisher walks its mimic
+map once in name order, so a chain resolves there only when each intermediate joint's name
+sorts before its dependent's).
+
 Where robot_state_publisher logs each bad message, this says it once per kind and joint,
 and where it forwards a NaN/inf position into /tf (every tf2 listener then rejects that
 transform), it leaves that transform out, once saying so: listeners see the same thing.
