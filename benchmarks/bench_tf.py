@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import gc
 import itertools
+import os
 import statistics
 import sys
 import time
@@ -40,14 +41,27 @@ FRAMES = [f"f{i}" for i in range(100)]
 QUICK = "--quick" in sys.argv
 
 
-def median_per_call(fn: Callable[[], object], n: int, repeats: int = 7) -> float:
-    samples = []
+class Clock:
+    """Wall and process CPU time of a block; on a shared machine CPU time shows the code's own cost."""
+
+    def __enter__(self) -> Clock:
+        self.wall, self.cpu = time.perf_counter(), time.process_time()
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.wall, self.cpu = time.perf_counter() - self.wall, time.process_time() - self.cpu
+
+
+def median_per_call(fn: Callable[[], object], n: int, repeats: int = 7) -> tuple[float, float]:
+    """Median (wall, CPU) seconds per call over ``repeats`` runs of ``n`` calls."""
+    walls, cpus = [], []
     for _ in range(repeats):
-        start = time.perf_counter()
-        for _ in range(n):
-            fn()
-        samples.append((time.perf_counter() - start) / n)
-    return statistics.median(samples)
+        with Clock() as c:
+            for _ in range(n):
+                fn()
+        walls.append(c.wall / n)
+        cpus.append(c.cpu / n)
+    return statistics.median(walls), statistics.median(cpus)
 
 
 def frame_poses(n: int, seed: int) -> np.ndarray:
@@ -88,49 +102,55 @@ def prefill(buf: Any, window_s: int, fresh: bool = False) -> int:
     return int(stamps[-1]) + MS
 
 
-def steady_inserts(window_s: int) -> tuple[float | None, float]:
+Rate = tuple[float, float]  # (wall, CPU) per second
+
+
+def _rate(count: int, c: Clock) -> Rate:
+    return count / c.wall, count / c.cpu
+
+
+def steady_inserts(window_s: int) -> tuple[Rate | None, Rate]:
     buf = Buffer(cache_time=Duration(seconds=window_s))
     stamp = prefill(buf, window_s)
     steps = 300 if QUICK else 1000
     poses = frame_poses(steps, 1)
     rows = [tuple(map(float, p)) for p in poses]
-    raw_rate = None
+    raw = None
     gc.collect()
     if hasattr(buf, "insert"):
         insert = buf.insert
-        start = time.perf_counter()
-        for k in range(steps):
-            s = stamp + k * MS
-            pose = rows[k]
-            for f in FRAMES:
-                insert("world", f, s, pose, "bench")
-        raw_rate = steps * len(FRAMES) / (time.perf_counter() - start)
+        with Clock() as c:
+            for k in range(steps):
+                s = stamp + k * MS
+                pose = rows[k]
+                for f in FRAMES:
+                    insert("world", f, s, pose, "bench")
+        raw = _rate(steps * len(FRAMES), c)
         stamp += steps * MS
     msgs = {f: make_transform("world", f, poses[0, :3], poses[0, 3:], 0) for f in FRAMES}
     stamps = [Time(nanoseconds=stamp + k * MS).to_msg() for k in range(steps)]
     set_transform = buf.set_transform
-    start = time.perf_counter()
-    for k in range(steps):
-        st = stamps[k]
-        for f in FRAMES:
-            m = msgs[f]
-            m.header.stamp = st
-            set_transform(m, "bench")
-    msg_rate = steps * len(FRAMES) / (time.perf_counter() - start)
-    return raw_rate, msg_rate
+    with Clock() as c:
+        for k in range(steps):
+            st = stamps[k]
+            for f in FRAMES:
+                m = msgs[f]
+                m.header.stamp = st
+                set_transform(m, "bench")
+    return raw, _rate(steps * len(FRAMES), c)
 
 
-def bulk_inserts() -> float | None:
+def bulk_inserts() -> Rate | None:
     buf = Buffer(cache_time=Duration(seconds=10))
     if not hasattr(buf, "insert_many"):
         return None
     n = 10_000
     stamps = np.arange(1, n + 1, dtype=np.int64) * MS
     poses = frame_poses(n, 2)
-    start = time.perf_counter()
-    for f in FRAMES:
-        buf.insert_many("world", f, stamps, poses, "bench")
-    return n * len(FRAMES) / (time.perf_counter() - start)
+    with Clock() as c:
+        for f in FRAMES:
+            buf.insert_many("world", f, stamps, poses, "bench")
+    return _rate(n * len(FRAMES), c)
 
 
 def bytes_per_sample() -> float:
@@ -170,10 +190,12 @@ def chain_buffer(samples: int) -> tuple[Any, TemporalTransformManager, np.ndarra
     return buf, tm, stamps
 
 
-def lookups() -> dict[str, float]:
+def lookups() -> dict[str, Any]:
     buf, tm, stamps = chain_buffer(500)
-    # Many different query times between samples: every link interpolates, no answer is reused.
-    queries = [int(stamps[k] + SEC // 300) for k in range(100, 400)]
+    # Many different query times between samples, in random order: every link interpolates,
+    # no answer or search position is reused.
+    order = np.random.default_rng(5).permutation(np.arange(100, 400))
+    queries = [int(stamps[k] + SEC // 300) for k in order]
     times = [Time(nanoseconds=q) for q in queries]
     cycle_t, cycle_q = itertools.cycle(times), itertools.cycle(queries)
     ours = median_per_call(lambda: buf.lookup_transform("map", "tool", next(cycle_t)), 20000)
@@ -188,31 +210,39 @@ def lookups() -> dict[str, float]:
     buf.lookup_transforms("map", "tool", many[:10])
     rates = []
     for _ in range(3):
-        start = time.perf_counter()
-        buf.lookup_transforms("map", "tool", many)
-        rates.append(n / (time.perf_counter() - start))
-    return {"ours": ours, "core": core, "theirs": theirs, "one": one, "vector": statistics.median(rates)}
+        with Clock() as c:
+            buf.lookup_transforms("map", "tool", many)
+        rates.append(_rate(n, c))
+    vector = (statistics.median(r[0] for r in rates), statistics.median(r[1] for r in rates))
+    return {"ours": ours, "core": core, "theirs": theirs, "one": one, "vector": vector}
 
 
-def fmt(rate: float | None, unit: str = "/s") -> str:
-    return "n/a" if rate is None else f"{rate / 1e3:,.0f}k{unit}"
+def fmt(rate: Rate | None) -> str:
+    return "n/a" if rate is None else f"{rate[0] / 1e3:,.0f}k/s (CPU time {rate[1] / 1e3:,.0f}k/s)"
+
+
+def us(t: tuple[float, float]) -> str:
+    return f"{t[0] * 1e6:.2f} us (CPU {t[1] * 1e6:.2f})"
 
 
 if __name__ == "__main__":
     look = lookups()
-    print(f"lookup, 5-deep interpolated chain: lookup_transform {look['ours'] * 1e6:.2f} us median "
-          f"(core lookup_ns {look['core'] * 1e6:.2f} us) | pytransform3d {look['theirs'] * 1e6:.0f} us -> "
-          f"{look['theirs'] / look['ours']:.0f}x ({look['theirs'] / look['core']:.0f}x core) "
-          "(targets <=10 us, >=200x)")
-    print(f"lookup_transforms with one stamp: {look['one'] * 1e6:.2f} us vs lookup_transform "
-          f"{look['ours'] * 1e6:.2f} us (target: no slower)")
-    print(f"vectorized lookups: {look['vector'] / 1e6:.2f}M lookups/s over the same chain (target >=2M/s)")
+    ours, core, theirs = look["ours"], look["core"], look["theirs"]
+    print(f"lookup, 5-deep interpolated chain: lookup_transform {us(ours)} median, core lookup_ns {us(core)} | "
+          f"pytransform3d {theirs[0] * 1e6:.0f} us -> {theirs[0] / ours[0]:.0f}x "
+          f"(CPU {theirs[1] / ours[1]:.0f}x; core {theirs[1] / core[1]:.0f}x) (targets <=10 us, >=200x)")
+    print(f"lookup_transforms with one stamp: {us(look['one'])} vs lookup_transform {us(ours)} "
+          "(target: no slower)")
+    vec = look["vector"]
+    print(f"vectorized lookups: {vec[0] / 1e6:.2f}M lookups/s (CPU time {vec[1] / 1e6:.2f}M/s) over the same chain "
+          "(target >=2M/s)")
     for window in (10, 60):
         raw, msg = steady_inserts(window)
         print(f"steady-state inserts, {window} s window full (100 frames at 1 kHz): insert {fmt(raw)}, "
               f"set_transform {fmt(msg)} (target >=300k/s, flat in the window)")
     bulk = bulk_inserts()
-    print(f"bulk inserts (insert_many, 100 frames x 10k samples): "
-          f"{'n/a' if bulk is None else f'{bulk / 1e6:.1f}M samples/s'} (target >=5M/s)")
+    bulk_text = "n/a" if bulk is None else f"{bulk[0] / 1e6:.1f}M samples/s (CPU time {bulk[1] / 1e6:.1f}M/s)"
+    print(f"bulk inserts (insert_many, 100 frames x 10k samples): {bulk_text} (target >=5M/s)")
     print(f"memory at steady state (10 s window, 100 frames at 1 kHz): {bytes_per_sample():.0f} bytes per "
           "stored sample (target <=80; tf2's C++ list node ~112)")
+    print(f"load average during the run: {os.getloadavg()[0]:.1f} on {os.cpu_count()} CPUs")

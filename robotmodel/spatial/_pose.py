@@ -84,40 +84,25 @@ def pose_interpolate(a: Pose7, b: Pose7, r: float) -> Pose7:
 def quat_canonical(q: Quat) -> Quat:
     """The quaternion as tf2 stores and returns it: through its rotation matrix and back.
 
-    Normalizes and picks tf2's sign (``Matrix3x3::setRotation`` then ``getRotation``). A
-    zero, NaN or infinite quaternion gives NaN in every component, as tf2's round trip does.
+    tf2 (``Matrix3x3::setRotation`` then ``getRotation``) returns the rotation of q/|q| with
+    w > 0 when the matrix trace is positive, else with a positive component along the
+    largest diagonal element (ties resolved as tf2 does). The diagonal is computed with
+    tf2's own operation order, so every branch decision matches tf2's; the value is
+    ±q/|q|. A zero, NaN or infinite quaternion gives NaN in every component, as tf2's
+    round trip does.
     """
     x, y, z, w = q
     n2 = x * x + y * y + z * z + w * w
     if not n2 > 0.0 or math.isinf(n2):
         return (math.nan, math.nan, math.nan, math.nan)
-    if w * w > 0.25 * n2:
-        # The matrix trace is 4w²/|q|² - 1 > 0: tf2's positive-trace branch returns ±q/|q| with w > 0.
-        inv = math.copysign(1.0 / math.sqrt(n2), w)
-        return (x * inv, y * inv, z * inv, w * inv)
     s = 2.0 / n2
-    m00 = 1.0 - s * (y * y + z * z)
-    m01 = s * (x * y - z * w)
-    m02 = s * (x * z + y * w)
-    m10 = s * (x * y + z * w)
-    m11 = 1.0 - s * (x * x + z * z)
-    m12 = s * (y * z - x * w)
-    m20 = s * (x * z - y * w)
-    m21 = s * (y * z + x * w)
-    m22 = 1.0 - s * (x * x + y * y)
-    trace = m00 + m11 + m22
-    if trace > 0.0:
-        root = math.sqrt(trace + 1.0)
-        half = 0.5 / root
-        return ((m21 - m12) * half, (m02 - m20) * half, (m10 - m01) * half, root * 0.5)
-    m = ((m00, m01, m02), (m10, m11, m12), (m20, m21, m22))
-    i = (2 if m11 < m22 else 1) if m00 < m11 else (2 if m00 < m22 else 0)
-    j, k = (i + 1) % 3, (i + 2) % 3
-    root = math.sqrt(m[i][i] - m[j][j] - m[k][k] + 1.0)
-    out = [0.0, 0.0, 0.0, 0.0]
-    out[i] = root * 0.5
-    half = 0.5 / root
-    out[3] = (m[k][j] - m[j][k]) * half
-    out[j] = (m[j][i] + m[i][j]) * half
-    out[k] = (m[k][i] + m[i][k]) * half
-    return (out[0], out[1], out[2], out[3])
+    xx, yy, zz = x * (x * s), y * (y * s), z * (z * s)
+    m00, m11, m22 = 1.0 - (yy + zz), 1.0 - (xx + zz), 1.0 - (xx + yy)
+    if m00 + m11 + m22 > 0.0:
+        lead = w
+    elif m00 < m11:
+        lead = z if m11 < m22 else y
+    else:
+        lead = z if m00 < m22 else x
+    inv = math.copysign(1.0 / math.sqrt(n2), lead)
+    return (x * inv, y * inv, z * inv, w * inv)

@@ -8,6 +8,8 @@ in a chain reads fastest; ``np.ascontiguousarray`` gives row-major when needed.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import numpy.typing as npt
 
@@ -60,81 +62,83 @@ def poses_inverse(a: npt.ArrayLike) -> F:
     return np.moveaxis(out, 0, -1)
 
 
+# Taylor coefficients of sin(x)/x in x²: up to x^22 the remainder on [0, π/2] is < 1e-18.
+_SIN_COEFFS = [(-1.0) ** k / math.factorial(2 * k + 1) for k in range(11, -1, -1)]
+
+
+def _sin_quarter_turn(x: F) -> F:
+    """sin(x) for x in [0, π/2] (Horner in x², full double precision)."""
+    x2 = x * x
+    acc = np.full_like(x2, _SIN_COEFFS[0])
+    for c in _SIN_COEFFS[1:]:
+        acc *= x2
+        acc += c
+    acc *= x
+    return acc
+
+
 def poses_interpolate(a: npt.ArrayLike, b: npt.ArrayLike, r: npt.ArrayLike) -> F:
     """tf2's lerp + SLERP from ``a`` (r = 0) to ``b`` (r = 1): the batched :func:`pose_interpolate`."""
     pa, pb = _as(a, 7), _as(b, 7)
     frac = np.asarray(r, dtype=np.float64)
     shape = np.broadcast_shapes(pa.shape[:-1], pb.shape[:-1], frac.shape)
+    if not shape:  # one pose: as a batch of one, so every step below works on arrays
+        one: F = poses_interpolate(pa.reshape(1, 7), pb.reshape(1, 7), frac.reshape(1))[0]
+        return one
     u = 1.0 - frac
     qa = [pa[..., k] for k in range(3, 7)]
     qb = [pb[..., k] for k in range(3, 7)]
-    dot = qa[0] * qb[0] + qa[1] * qb[1] + qa[2] * qb[2] + qa[3] * qb[3]
-    theta = np.arccos(np.minimum(np.abs(dot), 1.0))
+    dot = qa[0] * qb[0]
+    for k in range(1, 4):
+        dot += qa[k] * qb[k]
+    cos_theta = np.minimum(np.abs(dot), 1.0)
+    theta = np.arccos(cos_theta)
+    # NumPy's float64 sin is a scalar libm loop (~30x its arccos); θ, rθ and (1-r)θ lie in
+    # [0, π/2] here, where a full-precision polynomial is exact to a few ulp and much faster.
+    sine = _sin_quarter_turn if bool(((frac >= 0.0) & (frac <= 1.0)).all()) else np.sin
+    with np.errstate(divide="ignore", invalid="ignore"):  # θ = 0 rows are replaced below
+        sin_theta = sine(theta)
+        wa = sine(u * theta)
+        wa /= sin_theta
+        wb = sine(frac * theta)
+        wb /= sin_theta
     zero = theta == 0.0
-    # Where θ is 0 tf2 returns qa itself: weights (1, 0) give exactly that.
-    safe = np.where(zero, 1.0, np.sin(theta))
-    wa = np.where(zero, 1.0, np.sin(u * theta) / safe)
-    wb = np.where(zero, 0.0, np.sin(frac * theta) / safe)
+    if zero.any():
+        # Where θ is 0 tf2 returns qa itself: weights (1, 0) give exactly that.
+        wa = np.where(zero, 1.0, wa)
+        wb = np.where(zero, 0.0, wb)
     np.negative(wb, out=wb, where=dot < 0.0)
     out = np.empty((7, *shape))
     for k in range(3):
-        out[k] = pa[..., k] * u + pb[..., k] * frac
+        np.multiply(pa[..., k], u, out=out[k])
+        out[k] += pb[..., k] * frac
     for k in range(4):
-        out[3 + k] = qa[k] * wa + qb[k] * wb
+        np.multiply(qa[k], wa, out=out[3 + k])
+        out[3 + k] += qb[k] * wb
     return np.moveaxis(out, 0, -1)
 
 
 def quats_canonical(q: npt.ArrayLike) -> F:
     """tf2's matrix round trip of each quaternion: the batched :func:`quat_canonical`.
 
-    Normalized, with tf2's sign; NaN rows for zero, NaN or infinite quaternions.
+    ±q/|q| with tf2's sign (branch decisions on the diagonal computed in tf2's operation
+    order); NaN rows for zero, NaN or infinite quaternions.
     """
     quats = _as(q, 4)
-    flat = quats.reshape(-1, 4)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        n2 = np.einsum("ij,ij->i", flat, flat)
-        w = flat[:, 3]
-        # Positive matrix trace (4w²/|q|² - 1 > 0): tf2 returns ±q/|q| with w > 0.
-        positive_trace = w * w > 0.25 * n2
-        result: F = flat * np.copysign(1.0 / np.sqrt(n2), w)[:, None]
-        if not positive_trace.all():
-            others = ~positive_trace
-            result[others] = _canonical_by_matrix(flat[others], n2[others])
+    x, y, z, w = (quats[..., k] for k in range(4))
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        n2 = x * x + y * y + z * z + w * w
+        s = 2.0 / n2
+        xx, yy, zz = x * (x * s), y * (y * s), z * (z * s)
+        m00, m11, m22 = 1.0 - (yy + zz), 1.0 - (xx + zz), 1.0 - (xx + yy)
+        # tf2's getRotation: w > 0 on a positive trace, else the largest diagonal's component > 0.
+        lead = np.where(m00 < m11, np.where(m11 < m22, z, y), np.where(m00 < m22, z, x))
+        lead = np.where(m00 + m11 + m22 > 0.0, w, lead)
+        inv = np.copysign(1.0 / np.sqrt(n2), lead)
+        out = np.empty((4, *quats.shape[:-1]))
+        for k, c in enumerate((x, y, z, w)):
+            np.multiply(c, inv, out=out[k])
         bad = ~((n2 > 0.0) & np.isfinite(n2))
         if bad.any():
-            result[bad] = np.nan
-    return result.reshape(quats.shape)
-
-
-def _canonical_by_matrix(q: F, n2: F) -> F:
-    s = 2.0 / n2
-    x, y, z, w = q[:, 0], q[:, 1], q[:, 2], q[:, 3]
-    m = np.empty((q.shape[0], 3, 3))
-    m[:, 0, 0] = 1 - s * (y * y + z * z)
-    m[:, 0, 1] = s * (x * y - z * w)
-    m[:, 0, 2] = s * (x * z + y * w)
-    m[:, 1, 0] = s * (x * y + z * w)
-    m[:, 1, 1] = 1 - s * (x * x + z * z)
-    m[:, 1, 2] = s * (y * z - x * w)
-    m[:, 2, 0] = s * (x * z - y * w)
-    m[:, 2, 1] = s * (y * z + x * w)
-    m[:, 2, 2] = 1 - s * (x * x + y * y)
-    d0, d1, d2 = m[:, 0, 0], m[:, 1, 1], m[:, 2, 2]
-    trace = d0 + d1 + d2
-    # tf2's choice of the largest diagonal element, ties resolved as Matrix3x3::getRotation.
-    i = np.where(d0 < d1, np.where(d1 < d2, 2, 1), np.where(d0 < d2, 2, 0))
-    j, k = (i + 1) % 3, (i + 2) % 3
-    rows = np.arange(q.shape[0])
-    root = np.sqrt(np.maximum(m[rows, i, i] - m[rows, j, j] - m[rows, k, k] + 1.0, 1e-300))
-    half = 0.5 / root
-    out = np.empty_like(q)
-    out[rows, i] = root * 0.5
-    out[rows, 3] = (m[rows, k, j] - m[rows, j, k]) * half
-    out[rows, j] = (m[rows, j, i] + m[rows, i, j]) * half
-    out[rows, k] = (m[rows, k, i] + m[rows, i, k]) * half
-    pos_root = np.sqrt(np.maximum(trace + 1.0, 1e-300))
-    pos_half = 0.5 / pos_root
-    positive = np.stack([(m[:, 2, 1] - m[:, 1, 2]) * pos_half, (m[:, 0, 2] - m[:, 2, 0]) * pos_half,
-                         (m[:, 1, 0] - m[:, 0, 1]) * pos_half, pos_root * 0.5], axis=1)
-    result: F = np.where((trace > 0.0)[:, None], positive, out)
-    return result
+            out[:, bad] = np.nan
+    return np.moveaxis(out, 0, -1)

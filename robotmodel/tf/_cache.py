@@ -196,7 +196,18 @@ class TimeCache:
         if not increasing or not (empty or int(stamps[0]) > self._newest):
             rows = poses.tolist()
             return [k for k, s in enumerate(stamps.tolist()) if not self.insert(s, tuple(rows[k]), parent)]
-        previous = self._newest
+        if self.window is not None and (n >= 2 or not empty):
+            # The state after n single inserts: pruned by the newest stamp before the last one.
+            # Rows and samples older than that limit are accepted but not kept.
+            limit = (int(stamps[-2]) if n >= 2 else self._newest) - self.window
+            if not empty and self._newest < limit:
+                empty = True
+            elif not empty and self._oldest < limit:
+                self._prune(limit)
+            skip = int(np.searchsorted(stamps, limit, side="left"))
+            stamps, poses, n = stamps[skip:], poses[skip:], n - skip
+        if empty:
+            self._start = self._end = 0
         if self._end + n > self._cap:
             self._make_room(n)
         end = self._end
@@ -207,48 +218,46 @@ class TimeCache:
         self._newest = int(stamps[-1])
         if empty:
             self._oldest = int(stamps[0])
-        if self.window is not None and (n >= 2 or not empty):
-            # The state after n single inserts: pruned by the newest stamp before the last one.
-            limit = (int(stamps[-2]) if n >= 2 else previous) - self.window
-            if self._oldest < limit:
-                self._prune(limit)
         return []
 
     # ------------------------------------------------------------------ lookup
     def sample(self, t: int) -> tuple[Pose7, int] | CacheMiss:
         """(pose, parent id) at time ``t`` (0 = newest), interpolated; or why not."""
+        oldest, newest = self._oldest, self._newest
         start, end = self._start, self._end
+        if oldest < t < newest and end - start > 1:
+            smv = self._smv
+            last = end - 1
+            # Most streams are regular: guess the index from the rate, check it, else bisect.
+            i = start + (t - oldest) * (last - start) // (newest - oldest)
+            if smv[i] <= t:
+                if smv[i + 1] <= t:
+                    i = bisect_right(smv, t, i + 1, end) - 1
+            else:
+                i = bisect_right(smv, t, start, i) - 1
+            qmv, pmv = self._qmv, self._pmv
+            parent = qmv[i]
+            if qmv[i + 1] != parent:
+                return _unpack(pmv, i * _ROW), parent  # never interpolate across a parent change
+            t0 = smv[i]
+            return pose_interpolate(_unpack(pmv, i * _ROW), _unpack(pmv, (i + 1) * _ROW),
+                                    (t - t0) / (smv[i + 1] - t0)), parent
         if end == start:
             return _no_data(t, 0)
         last = end - 1
-        if t == 0:
+        if t in (0, newest):
             return _unpack(self._pmv, last * _ROW), self._qmv[last]
         if last == start:
-            if self._newest == t:
-                return _unpack(self._pmv, last * _ROW), self._qmv[last]
-            return _no_data(t, self._newest)
-        newest = self._newest
-        if t >= newest:
-            if t == newest:
-                return _unpack(self._pmv, last * _ROW), self._qmv[last]
+            return _no_data(t, newest)
+        if t > newest:
             return CacheMiss(ExtrapolationDirection.FORWARD, "Lookup would require extrapolation into the future.  "
                              f"Requested time {format_time(t)} but the latest data is at time {format_time(newest)}",
-                             self._oldest, newest)
-        oldest = self._oldest
-        if t <= oldest:
-            if t == oldest:  # among equal oldest stamps tf2 takes the earliest inserted
-                return _unpack(self._pmv, start * _ROW), self._qmv[start]
-            return CacheMiss(ExtrapolationDirection.BACKWARD, "Lookup would require extrapolation into the past.  "
-                             f"Requested time {format_time(t)} but the earliest data is at time {format_time(oldest)}",
                              oldest, newest)
-        smv = self._smv
-        i = bisect_right(smv, t, start, end) - 1
-        parent = self._qmv[i]
-        if self._qmv[i + 1] != parent:
-            return _unpack(self._pmv, i * _ROW), parent  # never interpolate across a parent change
-        t0 = smv[i]
-        return pose_interpolate(_unpack(self._pmv, i * _ROW), _unpack(self._pmv, (i + 1) * _ROW),
-                                (t - t0) / (smv[i + 1] - t0)), parent
+        if t == oldest:  # among equal oldest stamps tf2 takes the earliest inserted
+            return _unpack(self._pmv, start * _ROW), self._qmv[start]
+        return CacheMiss(ExtrapolationDirection.BACKWARD, "Lookup would require extrapolation into the past.  "
+                         f"Requested time {format_time(t)} but the earliest data is at time {format_time(oldest)}",
+                         oldest, newest)
 
     def arrays(self) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.float64], npt.NDArray[np.int32]]:
         """Zero-copy views of the live stamps, poses and parent ids (valid until the next insert)."""

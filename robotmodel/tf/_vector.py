@@ -24,6 +24,7 @@ __all__ = ["lookup_many"]
 
 F = npt.NDArray[np.float64]
 I64 = npt.NDArray[np.int64]
+_CHUNK = 16384
 _SCALAR_BELOW = 4  # fewer stamps than this: scalar lookups are faster than NumPy's per-call cost
 
 
@@ -69,10 +70,15 @@ def _sample(cache: TimeCache | StaticCache, index: _Index) -> tuple[F, int]:
     if stamps.shape[0] < 2 or index.t_min < stamps[0] or index.t_max > stamps[-1]:
         raise _Irregular  # extrapolation or a single sample: the scalar path gives tf2's errors
     i, j, r = index.lookup(stamps)
-    first = parents[i[0]]
-    if (parents[i] != first).any() or (parents[j] != first).any():
-        raise _Irregular  # a parent switch inside the span: the scalar walk picks per stamp
-    return poses_interpolate(poses[i], poses[j], r), int(first)
+    first = int(parents[0])
+    if parents.min() != parents.max():
+        at_i = parents[i]
+        first = int(at_i[0])
+        if (at_i != first).any() or (parents[j] != first).any():
+            raise _Irregular  # a parent switch inside the span: the scalar walk picks per stamp
+    # Gathered component-major ((7, N) memory, (N, 7) view): the kernels read whole columns.
+    columns = poses.T
+    return poses_interpolate(np.take(columns, i, axis=1).T, np.take(columns, j, axis=1).T, r), first
 
 
 def _walk(core: BufferCore, t: I64, target_id: int, source_id: int) -> F:
@@ -133,10 +139,16 @@ def lookup_many(core: BufferCore, target: str, source: str, stamps: I64) -> tupl
         if (stamps == 0).any():
             latest = core._latest_common_time(target_id, source_id, target, source)
             stamps = np.where(stamps == 0, latest, stamps)
+        translations, quats = np.empty((n, 3)), np.empty((n, 4))
         try:
-            poses = _walk(core, stamps, target_id, source_id)
-            return np.ascontiguousarray(poses[:, :3]), quats_canonical(poses[:, 3:])
+            # In chunks: the temporaries stay in cache and are reused by the allocator.
+            for lo in range(0, n, _CHUNK):
+                poses = _walk(core, stamps[lo:lo + _CHUNK], target_id, source_id)
+                translations[lo:lo + _CHUNK] = poses[:, :3]
+                quats[lo:lo + _CHUNK] = quats_canonical(poses[:, 3:])
         except _Irregular:
             pass
+        else:
+            return translations, quats
     out = np.array([core._lookup_ids(target_id, source_id, s, target, source)[0] for s in stamps.tolist()])
     return out[:, :3].copy(), out[:, 3:].copy()

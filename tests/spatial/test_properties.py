@@ -128,6 +128,40 @@ def test_canonical_quaternion_is_the_same_rotation_with_tf2s_sign(q) -> None:
     assert quat_canonical(tuple(-v for v in q)) == pytest.approx(c, abs=1e-12)
 
 
+def _tf2_round_trip(q):
+    """tf2's Matrix3x3::setRotation then getRotation, transcribed from the notes (Appendix A.3)."""
+    x, y, z, w = q
+    s = 2.0 / (x * x + y * y + z * z + w * w)
+    xs, ys, zs = x * s, y * s, z * s
+    wx, wy, wz = w * xs, w * ys, w * zs
+    xx, xy, xz = x * xs, x * ys, x * zs
+    yy, yz, zz = y * ys, y * zs, z * zs
+    m = [[1.0 - (yy + zz), xy - wz, xz + wy], [xy + wz, 1.0 - (xx + zz), yz - wx], [xz - wy, yz + wx, 1.0 - (xx + yy)]]
+    trace = m[0][0] + m[1][1] + m[2][2]
+    if trace > 0.0:
+        root = math.sqrt(trace + 1.0)
+        half = 0.5 / root
+        return ((m[2][1] - m[1][2]) * half, (m[0][2] - m[2][0]) * half, (m[1][0] - m[0][1]) * half, root * 0.5)
+    i = (2 if m[1][1] < m[2][2] else 1) if m[0][0] < m[1][1] else (2 if m[0][0] < m[2][2] else 0)
+    j, k = (i + 1) % 3, (i + 2) % 3
+    root = math.sqrt(m[i][i] - m[j][j] - m[k][k] + 1.0)
+    out = [0.0] * 4
+    out[i] = root * 0.5
+    half = 0.5 / root
+    out[3] = (m[k][j] - m[j][k]) * half
+    out[j] = (m[j][i] + m[i][j]) * half
+    out[k] = (m[k][i] + m[i][k]) * half
+    return tuple(out)
+
+
+@settings(max_examples=300)
+@given(quat)
+def test_canonical_quaternion_equals_tf2s_matrix_round_trip(q) -> None:
+    expected = _tf2_round_trip(q)
+    assert quat_canonical(q) == pytest.approx(expected, abs=1e-12)
+    np.testing.assert_allclose(quats_canonical([q])[0], expected, atol=1e-12)
+
+
 def test_canonical_quaternion_examples_from_tf2() -> None:
     # 270° about z comes back as -90°; -135° about z keeps w < 0 (Appendix A.3 of the tf2 notes).
     s = math.sqrt(0.5)
