@@ -33,6 +33,8 @@ COMMAND_MODULES: tuple[str, ...] = (
     "robotmodel.cli.jsp_cmd",
     "robotmodel.cli.jsp_gui_cmd",
     "robotmodel.cli.view_cmd",
+    "robotmodel.cli.topic_cmd",
+    "robotmodel.cli.router_cmd",
 )
 
 

@@ -75,6 +75,15 @@ class Proc:
                 os.killpg(self.popen.pid, signal.SIGKILL)
         self.popen.wait(10)
 
+    def terminate(self, timeout: float = 10.0) -> int:
+        """SIGTERM the process (as a service manager stops it) and wait; kill at the deadline."""
+        self.popen.send_signal(signal.SIGTERM)
+        try:
+            return self.popen.wait(timeout)
+        except subprocess.TimeoutExpired:
+            self.kill()
+            return -9
+
     def stop(self, timeout: float = 10.0) -> int:
         """Close stdin (the peers' signal to finish) and wait; kill at the deadline."""
         try:

@@ -1,0 +1,52 @@
+"""``robotmodel router``: a zenoh router (eclipse-zenoh in router mode), as ``ros2 run rmw_zenoh_cpp rmw_zenohd``.
+
+It listens on tcp/127.0.0.1:7447 (``ROBOTMODEL_ZENOH_PORT`` changes the port); give
+``--listen tcp/0.0.0.0:7447`` to serve other machines and ``--connect tcp/HOST:7447`` to
+join another machine's router. ``ZENOH_ROUTER_CONFIG_URI`` names a zenoh config file to use
+instead, and ``ZENOH_CONFIG_OVERRIDE`` patches it, as rmw_zenohd reads them.
+"""
+
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+__all__ = ["register", "run"]
+
+
+def register(sub: Any) -> None:
+    """Add the ``router`` subcommand."""
+    parser: argparse.ArgumentParser = sub.add_parser(
+        "router", aliases=["rmw_zenohd"],
+        help="run a zenoh router for processes and machines to meet (as rmw_zenohd)",
+        description="Run a zenoh router until Ctrl-C or SIGTERM. By default it listens on "
+        "tcp/127.0.0.1:7447 only; --listen tcp/0.0.0.0:7447 serves other machines.",
+    )
+    parser.add_argument("--listen", action="append", default=[], metavar="ENDPOINT",
+                        help="zenoh endpoint to listen on (repeatable; default tcp/127.0.0.1:7447)")
+    parser.add_argument("--connect", action="append", default=[], metavar="ENDPOINT",
+                        help="another router to connect to, e.g. tcp/192.168.1.10:7447 (repeatable)")
+    parser.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    """Open the router session and keep it until a signal; exit 0."""
+    import zenoh
+    from robotmodel.cli._bus_args import stop_on_signals
+
+    from robotmodel.bus._config import router_config
+    from robotmodel.errors import BusError
+
+    stop = stop_on_signals()
+    config = router_config(args.listen, args.connect)
+    try:
+        session = zenoh.open(config)
+    except zenoh.ZError as exc:
+        raise BusError(f"cannot start the router: {exc}") from exc
+    try:
+        # rmw_zenohd's start line.
+        print(f"Started Zenoh router with id {session.zid()}.", flush=True)
+        stop.wait()
+    finally:
+        session.close()  # type: ignore[no-untyped-call]
+    return 0
