@@ -285,3 +285,21 @@ def test_a_path_is_expanded_and_published_as_xacro_prints_it():
         rsp = RobotStateLogic(source)
         assert rsp.description_text == expand(ARM)
         assert rsp.description.name == "arm"
+
+
+CHAIN = """<robot name="chain">
+  <link name="l0"/><link name="l1"/><link name="l2"/><link name="l3"/>
+  <joint name="root" type="continuous"><parent link="l0"/><child link="l1"/><axis xyz="0 0 1"/></joint>
+  <joint name="z_mid" type="continuous"><parent link="l1"/><child link="l2"/><axis xyz="0 0 1"/>
+    <mimic joint="root" multiplier="2" offset="0.1"/></joint>
+  <joint name="a_dep" type="continuous"><parent link="l2"/><child link="l3"/><axis xyz="0 0 1"/>
+    <mimic joint="z_mid" multiplier="-1" offset="0.5"/></joint>
+</robot>"""
+
+
+def test_mimic_chain_resolves_whatever_the_name_order():
+    rsp = RobotStateLogic(CHAIN)
+    out = {t.child_frame_id: t for t in rsp.joint_state(joint_state({"root": 0.3}, T0), T0)}
+    # z_mid = 2·0.3 + 0.1 = 0.7; a_dep = -0.7 + 0.5 = -0.2 (RSP would drop a_dep: 'a_dep' < 'z_mid').
+    assert out["l2"].transform.rotation.z == pytest.approx(math.sin(0.7 / 2))
+    assert out["l3"].transform.rotation.z == pytest.approx(math.sin(-0.2 / 2))
