@@ -62,7 +62,7 @@ class Time:
     @classmethod
     def from_msg(cls, msg: Any) -> Time:
         """The Time of a ``builtin_interfaces/Time`` message (ours, rosbags' or rclpy's)."""
-        if isinstance(msg, Time | Duration) or not (hasattr(msg, "sec") and hasattr(msg, "nanosec")):
+        if not _is_msg(msg, "builtin_interfaces/msg/Time"):
             raise TypeError("Must pass a builtin_interfaces.msg.Time object")
         return cls(seconds=msg.sec, nanoseconds=msg.nanosec)
 
@@ -160,7 +160,7 @@ class Duration:
     @classmethod
     def from_msg(cls, msg: Any) -> Duration:
         """The Duration of a ``builtin_interfaces/Duration`` message (ours, rosbags' or rclpy's)."""
-        if isinstance(msg, Time | Duration) or not (hasattr(msg, "sec") and hasattr(msg, "nanosec")):
+        if not _is_msg(msg, "builtin_interfaces/msg/Duration"):
             raise TypeError("Must pass a builtin_interfaces.msg.Duration object")
         return cls(seconds=msg.sec, nanoseconds=msg.nanosec)
 
@@ -219,6 +219,14 @@ class Duration:
 
     def __neg__(self) -> Duration:
         return Duration(nanoseconds=-self._ns)
+
+
+def _is_msg(msg: Any, msgtype: str) -> bool:
+    # Ours and rosbags' name their type; rclpy's do not, so a sec/nanosec pair stands for it.
+    named = getattr(type(msg), "__msgtype__", None)
+    if named is not None:
+        return bool(named == msgtype)
+    return not isinstance(msg, Time | Duration) and hasattr(msg, "sec") and hasattr(msg, "nanosec")
 
 
 def _time_from_ns(ns: int) -> Time:

@@ -155,6 +155,15 @@ def test_from_msg_takes_other_libraries_messages() -> None:
         Time.from_msg(Time(seconds=1))
     with pytest.raises(TypeError, match=re.escape("Must pass a builtin_interfaces.msg.Duration object")):
         Duration.from_msg(3)
+    with pytest.raises(TypeError, match=re.escape("Must pass a builtin_interfaces.msg.Duration object")):
+        Duration.from_msg(builtin_interfaces.Time(sec=1))
+    with pytest.raises(TypeError, match=re.escape("Must pass a builtin_interfaces.msg.Time object")):
+        Time.from_msg(store.types["builtin_interfaces/msg/Duration"](sec=1, nanosec=0))
+
+    class RclpyStamp:  # rclpy's messages carry no type name: the fields stand for it
+        sec, nanosec = 2, 3
+
+    assert Time.from_msg(RclpyStamp()) == Time(seconds=2, nanoseconds=3)
     with pytest.raises(ValueError, match="Seconds value must not be negative"):
         Time.from_msg(builtin_interfaces.Time(sec=-1))
 
