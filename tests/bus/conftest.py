@@ -151,3 +151,9 @@ def deadline(seconds: float) -> Callable[[], bool]:
     """A callable that turns False once ``seconds`` have passed."""
     end = time.monotonic() + seconds
     return lambda: time.monotonic() < end
+
+
+@pytest.fixture
+def new_port() -> Callable[[], int]:
+    """Gives loopback ports nobody listens on."""
+    return free_port
