@@ -2,6 +2,10 @@
 
 from __future__ import annotations
 
+import ast
+import importlib.metadata
+import re
+import sys
 import tomllib
 
 from conftest import REPO
@@ -31,3 +35,47 @@ def test_cli_and_models_install_under_robotmodel() -> None:
 
     assert robotmodel.cli.main.__file__.startswith(str(REPO / "cli"))
     assert robotmodel.robots.__file__.startswith(str(REPO / "urdf"))
+
+
+def _declared(extra: str | None = None) -> set[str]:
+    with (REPO / "pyproject.toml").open("rb") as f:
+        project = tomllib.load(f)["project"]
+    specs = project["dependencies"] if extra is None else project["optional-dependencies"][extra]
+    return {re.split(r"[<>=!~\[; ]", spec, maxsplit=1)[0].lower().replace("_", "-") for spec in specs}
+
+
+def _third_party_imports() -> dict[str, str]:
+    """Top-level module -> first file importing it, for every import in the library and the CLI."""
+    found: dict[str, str] = {}
+    for folder in ("robotmodel", "cli"):
+        for path in sorted((REPO / folder).rglob("*.py")):
+            for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+                if isinstance(node, ast.Import):
+                    names = [alias.name for alias in node.names]
+                elif isinstance(node, ast.ImportFrom) and node.level == 0 and node.module:
+                    names = [node.module]
+                else:
+                    continue
+                for name in names:
+                    top = name.split(".")[0]
+                    if top not in sys.stdlib_module_names and top not in {"robotmodel", "__future__"}:
+                        found.setdefault(top, str(path.relative_to(REPO)))
+    return found
+
+
+def test_every_imported_package_is_declared() -> None:
+    distributions = importlib.metadata.packages_distributions()
+    declared = _declared()
+    missing = {}
+    for module, where in _third_party_imports().items():
+        names = {d.lower().replace("_", "-") for d in distributions.get(module, [module])}
+        if module == "pinocchio":
+            names.add("pin")  # a cmeel wheel: its module sits under cmeel.prefix, unmapped by importlib.metadata
+        if not names & declared:
+            missing[module] = (sorted(names), where)
+    assert not missing, f"imported but not in [project] dependencies: {missing}"
+
+
+def test_the_user_list_is_installed_by_pip_install() -> None:
+    assert {"xacro", "yourdfpy", "pin", "trimesh", "meshcat", "numpy"} <= _declared()
+    assert "pytest" in _declared("test")
