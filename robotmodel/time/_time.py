@@ -10,6 +10,7 @@ nanoseconds, and ``Time() == Time(nanoseconds=0)`` is what tf2 reads as "latest"
 from __future__ import annotations
 
 import math
+from datetime import datetime
 from typing import Any, NoReturn, overload
 
 from robotmodel.msgs import builtin_interfaces
@@ -58,6 +59,10 @@ class Time:
         """A new ``builtin_interfaces/Time`` message holding this time."""
         sec, nanosec = divmod(self._ns, _NS)
         return builtin_interfaces.Time(sec=sec, nanosec=nanosec)
+
+    def to_datetime(self) -> datetime:
+        """The naive local ``datetime`` of this time, as rclpy's (microsecond resolution)."""
+        return datetime.fromtimestamp(self._ns / _NS)
 
     @classmethod
     def from_msg(cls, msg: Any) -> Time:

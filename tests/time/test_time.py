@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import pickle
 import re
+from datetime import datetime
 
 import pytest
 from hypothesis import given
@@ -107,6 +108,10 @@ def test_ordering_within_a_kind_only() -> None:
         _ = Time() < Duration()  # type: ignore[operator]
     with pytest.raises(TypeError):
         _ = Time() < 5  # type: ignore[operator]
+
+
+def test_to_datetime_as_rclpy() -> None:
+    assert Time(seconds=1_700_000_000.25).to_datetime() == datetime.fromtimestamp(1_700_000_000.25)
 
 
 def test_repr_and_str_as_rclpy() -> None:
