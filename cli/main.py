@@ -5,6 +5,12 @@ a parser (with its ROS spelling as an alias) and sets ``func`` to a callable tak
 parsed namespace and returning an exit code. Errors the library raises on purpose
 (:class:`robotmodel.errors.RobotModelError`) are printed as one line and give exit 1;
 anything else is a bug and keeps its traceback.
+
+Subparsers are :class:`robotmodel.cli._common.CommandParser`: a command that calls
+``add_model_arguments`` (or ``add_mapping_arguments``) gets xacro's ``name:=value`` words
+from anywhere on the line, and errors print that command's usage. Command modules are
+imported to build ``--help``, so they import only argparse-level code at the top and their
+implementation inside the handler (tests/cli/test_startup.py checks the module set).
 """
 
 from __future__ import annotations
