@@ -147,3 +147,30 @@ with Node("listener") as node:
     print("subscribed", flush=True)
     stop.wait()
 """
+
+
+def test_follow_and_tf_with_the_robot_from_robot_description(bus: Bus) -> None:
+    """rviz's setup: no FILE (the robot from /robot_description), joints from /joint_states, frames from /tf."""
+    arm = str(BUNDLED / "arm.urdf.xacro")
+    bus.robotmodel("robot-state-publisher", arm)
+    bus.robotmodel("joint-state-publisher", arm, "--zeros", "arm_shoulder_joint=0.5", "arm_elbow_joint=-0.7")
+    view = bus.robotmodel("view", "--follow", "--tf", "--port", "0")
+    url = view.wait_line(r"^http://127\.0\.0\.1:\d+/$", timeout=120).group(0)
+    try:
+        with Browser(timeout=60) as browser:
+            browser.navigate(url)
+            browser.wait_for(READY, timeout=60)
+            browser.wait_for("Math.abs(window.robotmodel.positions.arm_elbow_joint + 0.7) < 1e-9", timeout=30)
+            assert browser.evaluate(MESH_COUNT) >= _visual_count(BUNDLED / "arm.urdf.xacro")
+            drawn = browser.wait_for("""(() => { const n = viewer.scene_tree.find(["tf", "gripper_palm_link"]);
+                return n.object.matrix.elements[15] === 1 && n.object.position.lengthSq() > 0
+                    && Array.from(n.object.matrix.elements); })()""", timeout=30)
+    finally:
+        code = view.stop(signal.SIGINT)
+    assert code == 0, view.err[-20:]
+    from robotmodel.kinematics import KinematicModel, KinematicState
+
+    desc = load(BUNDLED / "arm.urdf.xacro")
+    expected = KinematicState(KinematicModel(desc)).update(
+        {"arm_shoulder_joint": 0.5, "arm_elbow_joint": -0.7}).link_matrix("gripper_palm_link")
+    np.testing.assert_allclose(np.asarray(drawn).reshape(4, 4).T, expected, atol=1e-5)
