@@ -26,6 +26,7 @@ from robotmodel.errors import JointValueError, KinematicsError, UnknownJointErro
 from robotmodel.kinematics._fast import CycleTables, cross_matrix
 from robotmodel.kinematics._joints import KIND_FIXED, JointTable
 from robotmodel.kinematics._pin import PinocchioModel, free_or_planar, pinocchio_data_bytes
+from robotmodel.kinematics._single import LinkTree
 from robotmodel.model import JointType, RobotDescription, load
 from robotmodel.spatial import FloatArray
 
@@ -169,6 +170,10 @@ class KinematicModel:
     def _all_rows(self) -> CycleTables:
         """The publishing cycle's constants for every joint (fixed ones give their origin)."""
         return CycleTables.build(self.table, list(range(len(self.table.names))))
+
+    @cached_property
+    def _link_tree(self) -> LinkTree:
+        return LinkTree.build(self._link_index[self.root], len(self.link_names), self._walk_rows)
 
     @cached_property
     def _pinocchio(self) -> PinocchioModel:

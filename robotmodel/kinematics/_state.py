@@ -60,8 +60,7 @@ class KinematicState:
         motions = {model._joint_index[name]: free_motion(model._types[name] is JointType.FLOATING, v)
                    for name, v in free.items()}
         self._rotations, self._translations = compose_tree(
-            model.table, model._all_rows, values, motions, model._walk_rows, model._link_index[model.root],
-            len(model.link_names), model.description.name)
+            model.table, model._all_rows, values, motions, model._link_tree, model.description.name)
         self.q, self._extra = q, extra
         return self
 
