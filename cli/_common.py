@@ -120,10 +120,15 @@ def add_mapping_arguments(parser: argparse.ArgumentParser) -> None:
     parser.epilog = "name:=value words (xacro arguments) may stand anywhere on the line."
 
 
-def add_model_arguments(parser: argparse.ArgumentParser) -> None:
-    """Add the FILE, ``name:=value``, package-path and trust arguments every model command takes."""
+def add_model_arguments(parser: argparse.ArgumentParser, *, file_help: str | None = None,
+                        file_optional: bool = False) -> None:
+    """Add the FILE, ``name:=value``, package-path, trust and ``--verbose`` arguments of model commands.
+
+    ``file_optional`` makes FILE optional (``args.file`` is then None when omitted).
+    """
     add_mapping_arguments(parser)
-    parser.add_argument("file", metavar="FILE", help="a .urdf or .xacro file ('-' reads stdin)")
+    parser.add_argument("file", metavar="FILE", nargs="?" if file_optional else None,
+                        help=file_help or "a .urdf or .xacro file ('-' reads stdin)")
     parser.add_argument(
         "--package-path", action="append", default=[], metavar="DIR",
         help="search DIR first for ROS packages ($(find pkg), package://); repeatable",
