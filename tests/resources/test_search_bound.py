@@ -143,3 +143,18 @@ def test_the_install_prefix_the_input_lies_in(tmp_path: Path) -> None:
     (prefix / "share" / "robot-data").mkdir()
     entry = _entry(_package(prefix / "share" / "robot-data", "robot_data_descriptions") / "robots" / "r")
     assert find_package("robot-data", start=entry) == prefix / "share" / "robot-data"
+
+
+def test_a_file_directly_in_the_temp_folder(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    import tempfile
+
+    fake_tmp = tmp_path / "tmp"
+    monkeypatch.setattr(tempfile, "tempdir", str(fake_tmp))
+    _package(fake_tmp / "x" / "y" / "copy_pkg", "copy_pkg")
+    loose = _entry(fake_tmp)
+    with pytest.raises(PackageNotFoundError, match="nothing beside the input"):
+        find_package("copy_pkg", start=loose)
+    mine = _package(fake_tmp / "mine", "mine")
+    assert find_package("mine", start=_entry(mine / "urdf")) == mine
+    with pytest.raises(PackageNotFoundError, match=f"the input's package folder {mine}"):
+        find_package("copy_pkg", start=mine / "urdf" / "robot.urdf")
