@@ -28,7 +28,7 @@ from __future__ import annotations
 
 from robotmodel.bus._attachment import ATTACHMENT_SIZE, Attachment
 from robotmodel.bus._backend import Backend, RawSample
-from robotmodel.bus._codec import Codec, RosbagsCodec, codec_for, register_codec, typestore
+from robotmodel.bus._codec import Codec, RosbagsCodec, TFRecords, codec_for, register_codec, typestore
 from robotmodel.bus._errors import BusError
 from robotmodel.bus._graph import Graph
 from robotmodel.bus._names import (
@@ -81,6 +81,7 @@ __all__ = [
     "Reliability",
     "RosbagsCodec",
     "Subscription",
+    "TFRecords",
     "codec_for",
     "dds_type_name",
     "default_domain_id",

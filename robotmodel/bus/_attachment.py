@@ -12,11 +12,34 @@ from typing import NamedTuple
 
 from robotmodel.bus._errors import BusError
 
-__all__ = ["ATTACHMENT_SIZE", "Attachment"]
+__all__ = ["ATTACHMENT_SIZE", "Attachment", "AttachmentWriter", "is_attachment"]
 
 _HEAD = struct.Struct("<qqB")
 ATTACHMENT_SIZE = _HEAD.size + 16
 _GID_LEN = 16
+_GID_LEN_OFFSET = 16
+_WHOLE = struct.Struct("<qqB16s")
+
+
+def is_attachment(data: bytes) -> bool:
+    """Whether ``data`` has rmw_zenoh's attachment layout (the check on the hot path)."""
+    return len(data) == ATTACHMENT_SIZE and data[_GID_LEN_OFFSET] == _GID_LEN
+
+
+class AttachmentWriter:
+    """Packs one publisher's attachments in a single call (the publish hot path)."""
+
+    __slots__ = ("_gid", "_pack")
+
+    def __init__(self, gid: bytes) -> None:
+        if len(gid) != _GID_LEN:
+            raise BusError(f"a GID is 16 bytes, got {len(gid)}")
+        self._gid = gid
+        self._pack = _WHOLE.pack
+
+    def __call__(self, sequence_number: int, source_timestamp_ns: int) -> bytes:
+        """The 33 bytes for one sample."""
+        return self._pack(sequence_number, source_timestamp_ns, _GID_LEN, self._gid)
 
 
 class Attachment(NamedTuple):

@@ -15,7 +15,16 @@ from typing import Any
 
 from robotmodel.bus._errors import BusError
 
-__all__ = ["KNOWN_TYPE_HASHES", "Codec", "MsgsCodec", "RosbagsCodec", "codec_for", "register_codec", "typestore"]
+__all__ = [
+    "KNOWN_TYPE_HASHES",
+    "Codec",
+    "MsgsCodec",
+    "RosbagsCodec",
+    "TFRecords",
+    "codec_for",
+    "register_codec",
+    "typestore",
+]
 
 
 def typestore() -> Any:
@@ -139,6 +148,35 @@ class MsgsCodec(Codec):
         self.decode(self.encode(self._cls()))
 
 
+class TFRecords:
+    """Message type standing for a TFMessage read and written as a list of ``TFRecord``.
+
+    ``TFRecord(parent, child, stamp_ns, pose)`` with ``pose`` as (x, y, z, qx, qy, qz, qw):
+    the form ``Buffer.insert`` takes, without building message objects (the /tf hot path).
+    Same key, same bytes as :class:`robotmodel.msgs.TFMessage`.
+    """
+
+    __msgtype__ = "tf2_msgs/msg/TFMessage"
+
+
+class _TFRecordsCodec(Codec):
+    def __init__(self) -> None:
+        from robotmodel import msgs
+
+        self.typename = TFRecords.__msgtype__
+        self._encode = msgs.encode_tf_records
+        self._decode = msgs.decode_tf_records
+
+    def encode(self, msg: Any) -> bytes:
+        return self._encode(msg)
+
+    def decode(self, data: bytes | memoryview) -> Any:
+        return self._decode(data)
+
+    def warm(self) -> None:
+        self.decode(self.encode([]))
+
+
 def _nested_names(desc: Any) -> list[str]:
     # rosbags field descriptors: (NODETYPE, payload); NAME=2 nests a message directly,
     # ARRAY/SEQUENCE=3/4 wrap another descriptor.
@@ -184,6 +222,8 @@ def codec_for(msg_type: Any) -> Codec:
 def _codec_for_class(cls: type, typename: str) -> Codec:
     if cls.__module__.startswith("rosbags."):
         return RosbagsCodec(typename)
+    if cls is TFRecords:
+        return _TFRecordsCodec()
     if cls.__module__.startswith("robotmodel.msgs"):
         return MsgsCodec(cls)
     to_ros = getattr(cls, "to_rosbags", None)

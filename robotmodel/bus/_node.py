@@ -10,7 +10,7 @@ import time
 from collections.abc import Callable, Sequence
 from typing import Any, Generic, NamedTuple, TypeVar
 
-from robotmodel.bus._attachment import Attachment
+from robotmodel.bus._attachment import Attachment, AttachmentWriter, is_attachment
 from robotmodel.bus._backend import Backend, Handle, RawPublisher, RawSample
 from robotmodel.bus._codec import Codec, codec_for
 from robotmodel.bus._errors import BusError
@@ -154,6 +154,7 @@ class Publisher(Generic[M]):
         codec.warm()
         self._lock = threading.Lock()
         self._seq = 1
+        self._attachment = AttachmentWriter(self.gid)
         self._pub: RawPublisher | None = ctx.backend.declare_publisher(self.key, qos)
         self._token: Handle | None = ctx.backend.declare_token(self.entity.keyexpr)
 
@@ -168,8 +169,8 @@ class Publisher(Generic[M]):
             if pub is None:
                 raise BusError(f"publisher on '{self.topic_name}' is closed")
             seq = self._seq
-            self._seq += 1
-            pub.put(payload, Attachment(seq, time.time_ns(), self.gid).encode())
+            self._seq = seq + 1
+            pub.put(payload, self._attachment(seq, time.time_ns()))
 
     def get_subscription_count(self) -> int:
         """How many subscriptions on this topic the graph shows (any type)."""
@@ -229,15 +230,14 @@ class Subscription(Generic[M]):
             self.entity = None
 
     def _on_sample(self, sample: RawSample) -> None:
-        if sample.attachment is None:
-            self._warner.warn("attachment", f"dropped a message on '{self.topic_name}' without an attachment")
-            return
-        try:
-            att = Attachment.decode(sample.attachment)
-        except BusError as exc:
-            self._warner.warn("attachment", f"dropped a message on '{self.topic_name}': {exc}")
+        attachment = sample.attachment
+        if attachment is None or not is_attachment(attachment):
+            what = "without an attachment" if attachment is None else f"with a {len(attachment)}-byte attachment"
+            self._warner.warn("attachment", f"dropped a message on '{self.topic_name}' {what} "
+                                            "(rmw_zenoh's is 33 bytes)")
             return
         if self._raw:
+            att = Attachment.decode(attachment)
             chunks = sample.key.split("/")
             typename = ros_type_name(chunks[-2]) if len(chunks) >= 3 else ""
             self._deliver(RawMessage(self.topic_name, typename, sample.payload, att))

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import logging
+from typing import Any
 
 import pytest
 
@@ -15,6 +16,7 @@ from robotmodel.bus import (
     Context,
     Node,
     RawMessage,
+    TFRecords,
     codec_for,
     typestore,
 )
@@ -163,3 +165,20 @@ def test_attachment_round_trip_and_rejects() -> None:
         Attachment.decode(att.encode()[:-1])
     with pytest.raises(BusError):
         Attachment(1, 2, b"short").encode()
+
+
+def test_tf_records_share_the_tfmessage_key_and_bytes() -> None:
+    records: list[list[Any]] = []
+    messages: list[TFMessage] = []
+    with Node("tf", backend="inprocess", domain_id=112) as node:
+        node.create_subscription(TFRecords, "/tf", records.append, QOS_TF)
+        node.create_subscription(TFMessage, "/tf", messages.append, QOS_TF)
+        msg_pub = node.create_publisher(TFMessage, "/tf", QOS_TF)
+        rec_pub = node.create_publisher(TFRecords, "/tf", QOS_TF)
+        assert msg_pub.key == rec_pub.key
+        msg_pub.publish(TFMessage([make_transform("a", "b", (1.0, 2.0, 3.0), (0.0, 0.0, 0.6, 0.8), 7_000_000_001)]))
+        rec_pub.publish(records[0])
+    assert records[0] == records[1]
+    parent, child, stamp_ns, pose = records[0][0]
+    assert (parent, child, stamp_ns, pose) == ("a", "b", 7_000_000_001, (1.0, 2.0, 3.0, 0.0, 0.0, 0.6, 0.8))
+    assert messages[0] == messages[1]
