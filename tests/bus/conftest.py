@@ -105,14 +105,22 @@ class Procs:
         self.env = env
         self.started: list[Proc] = []
 
+    @staticmethod
+    def peer_args(*args: str) -> list[str]:
+        return [sys.executable, str(PEER), *args]
+
+    @staticmethod
+    def cli_args(*args: str) -> list[str]:
+        return [sys.executable, "-m", "robotmodel.cli.main", *args]
+
     def peer(self, *args: str) -> Proc:
-        return self.run([sys.executable, str(PEER), *args])
+        return self.run(self.peer_args(*args))
 
     def cli(self, *args: str) -> Proc:
-        return self.run([sys.executable, "-m", "robotmodel.cli.main", *args])
+        return self.run(self.cli_args(*args))
 
-    def run(self, args: list[str]) -> Proc:
-        proc = Proc(args, self.env)
+    def run(self, args: list[str], env: dict[str, str] | None = None) -> Proc:
+        proc = Proc(args, self.env if env is None else env)
         self.started.append(proc)
         return proc
 

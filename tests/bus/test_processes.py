@@ -177,3 +177,19 @@ def test_a_plain_zenoh_client_of_the_router_sees_the_graph(procs: Any, bus_env: 
         session.close()
     assert any("/MP/%/%/peer_static_pub/%tf_static/tf2_msgs::msg::dds_::TFMessage_/" in t for t in tokens), tokens
     assert any(t.endswith("/NN/%/%/peer_static_pub") for t in tokens), tokens
+
+
+def test_two_routers_chained_as_in_the_two_machine_recipe(procs: Any, bus_env: dict[str, str],
+                                                         new_port: Any) -> None:
+    # Two "machines" on one host: each has its router on its own port; one router connects
+    # to the other, and each machine's tools meet their local router.
+    robot_port = bus_env["ROBOTMODEL_ZENOH_PORT"]
+    laptop_port = str(new_port())
+    robot_router = procs.cli("router")
+    robot_router.wait_line("Started Zenoh router")
+    laptop_env = dict(bus_env, ROBOTMODEL_ZENOH_PORT=laptop_port)
+    laptop_router = procs.run([*procs.cli_args("router", "--connect", f"tcp/127.0.0.1:{robot_port}")], env=laptop_env)
+    laptop_router.wait_line("Started Zenoh router")
+    procs.peer("static-pub").wait_line("ready")
+    laptop_listener = procs.run(procs.peer_args("static-print"), env=laptop_env)
+    assert laptop_listener.wait_for(lambda ls: len(static_frames(ls)) == 2, 20), laptop_listener.lines
