@@ -70,6 +70,7 @@ def frame_poses(n: int, seed: int) -> np.ndarray:
     poses[:, :3] = np.cumsum(rng.uniform(-0.01, 0.01, (n, 3)), axis=0)
     angle = np.cumsum(rng.uniform(0.0, 0.01, n))
     poses[:, 3:] = np.column_stack([np.zeros(n), np.zeros(n), np.sin(angle / 2), np.cos(angle / 2)])
+    poses[1::2, 3:] *= -1.0  # both signs of each rotation, as publishers send them
     return poses
 
 
@@ -129,13 +130,16 @@ def steady_inserts(window_s: int) -> tuple[Rate | None, Rate]:
         stamp += steps * MS
     msgs = {f: make_transform("world", f, poses[0, :3], poses[0, 3:], 0) for f in FRAMES}
     stamps = [Time(nanoseconds=stamp + k * MS).to_msg() for k in range(steps)]
+    # The same moving poses as the raw inserts (rotations of every sign, not only w > 0.5).
+    transforms = [make_transform("world", "x", p[:3], p[3:], 0).transform for p in poses]
     set_transform = buf.set_transform
     with Clock() as c:
         for k in range(steps):
-            st = stamps[k]
+            st, tr = stamps[k], transforms[k]
             for f in FRAMES:
                 m = msgs[f]
                 m.header.stamp = st
+                m.transform = tr
                 set_transform(m, "bench")
     return raw, _rate(steps * len(FRAMES), c)
 

@@ -27,6 +27,7 @@ _POSE = struct.Struct("7d")
 _unpack = _POSE.unpack_from
 _pack = _POSE.pack_into
 _ROW = _POSE.size
+_unpack_two = struct.Struct("14d").unpack_from  # a sample and its newer neighbour
 _MIN_SPARE = 16
 
 
@@ -227,21 +228,23 @@ class TimeCache:
         start, end = self._start, self._end
         if oldest < t < newest and end - start > 1:
             smv = self._smv
-            last = end - 1
             # Most streams are regular: guess the index from the rate, check it, else bisect.
-            i = start + (t - oldest) * (last - start) // (newest - oldest)
-            if smv[i] <= t:
-                if smv[i + 1] <= t:
+            i = start + (t - oldest) * (end - 1 - start) // (newest - oldest)
+            t0 = smv[i]
+            if t0 <= t:
+                t1 = smv[i + 1]
+                if t1 <= t:
                     i = bisect_right(smv, t, i + 1, end) - 1
+                    t0, t1 = smv[i], smv[i + 1]
             else:
                 i = bisect_right(smv, t, start, i) - 1
-            qmv, pmv = self._qmv, self._pmv
+                t0, t1 = smv[i], smv[i + 1]
+            qmv = self._qmv
             parent = qmv[i]
+            both = _unpack_two(self._pmv, i * _ROW)
             if qmv[i + 1] != parent:
-                return _unpack(pmv, i * _ROW), parent  # never interpolate across a parent change
-            t0 = smv[i]
-            return pose_interpolate(_unpack(pmv, i * _ROW), _unpack(pmv, (i + 1) * _ROW),
-                                    (t - t0) / (smv[i + 1] - t0)), parent
+                return both[:7], parent  # never interpolate across a parent change
+            return pose_interpolate(both[:7], both[7:], (t - t0) / (t1 - t0)), parent
         if end == start:
             return _no_data(t, 0)
         last = end - 1

@@ -104,10 +104,13 @@ class BufferCore(FrameGraph):
             if type(rw) is float and type(x) is float:
                 n2 = rx * rx + ry * ry + rz * rz + rw * rw
                 total = x + y + z + n2
-                # Common case: finite, already a unit quaternion in tf2's sign (w > 0.5 means a
-                # positive matrix trace), so tf2's matrix round trip would return it as is.
-                if total - total == 0.0 and rw > 0.5 and abs(n2 - 1.0) < 1e-12:
-                    values = pose
+                if total - total == 0.0:  # finite
+                    if rw > 0.5 and abs(n2 - 1.0) < 1e-12:
+                        # Already a unit quaternion in tf2's sign (w > 0.5: positive matrix trace),
+                        # which tf2's matrix round trip returns as is.
+                        values = pose
+                    elif n2 > 0.0:
+                        values = (x, y, z, *quat_canonical((rx, ry, rz, rw)))
         if values is None:
             ids_ok = frame_ids_ok(parent, child, authority)
             values = canonical_pose(pose, child, authority)
