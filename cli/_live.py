@@ -1,6 +1,7 @@
 """The serving half of ``view`` and ``joint-state-publisher-gui``: the page, and the bus when asked.
 
-- no FILE: the robot comes from ``/robot_description`` (latched), as rviz's RobotModel display;
+- no FILE: the robot comes from ``/robot_description`` (latched), and each new description
+  there replaces it, as in rviz's RobotModel display;
 - ``--follow``: ``/joint_states`` drives the robot (latest state, redrawn at most 30 times a second);
 - ``--tf``: frames from ``/tf`` and ``/tf_static`` drawn as named axes, placed from the fixed frame;
 - ``--publish``: the sliders' values go out on ``/joint_states`` (joint_state_publisher_gui).
@@ -18,47 +19,87 @@ __all__ = ["serve_live"]
 _TF_PERIOD = 1.0 / 30.0
 
 
-def _wait_description(node: Any, stop: threading.Event) -> Any:
-    from robotmodel.bus import QOS_LATCHED
+class _Descriptions:
+    """The latest /robot_description text (latched), and an event for each new one."""
+
+    def __init__(self, node: Any) -> None:
+        from robotmodel.bus import QOS_LATCHED
+        from robotmodel.msgs import String
+
+        self.text: str | None = None
+        self.changed = threading.Event()
+        self._lock = threading.Lock()
+        self.sub = node.create_subscription(String, "robot_description", self._on_message, QOS_LATCHED)
+
+    def _on_message(self, msg: Any) -> None:
+        with self._lock:
+            if msg.data != self.text:
+                self.text = msg.data
+                self.changed.set()
+
+    def take(self) -> str | None:
+        """The text if it changed since the last call, else None."""
+        with self._lock:
+            if not self.changed.is_set():
+                return None
+            self.changed.clear()
+            return self.text
+
+    def close(self) -> None:
+        self.sub.close()
+
+
+def _parse(text: str) -> Any:
+    from robotmodel.errors import RobotModelError
     from robotmodel.model import parse_urdf
-    from robotmodel.msgs import String
 
-    got: list[Any] = []
-    ready = threading.Event()
+    try:
+        return parse_urdf(text)
+    except RobotModelError as exc:
+        print(f"robotmodel view: ignoring robot_description: {' '.join(str(exc).splitlines())}", file=sys.stderr)
+        return None
 
-    def on_description(msg: String) -> None:
-        if not got:
-            got.append(msg.data)
-            ready.set()
 
-    sub = node.create_subscription(String, "robot_description", on_description, QOS_LATCHED)
+def _wait_description(topic: _Descriptions, stop: threading.Event) -> Any:
     print("Waiting for robot_description to be published on the robot_description topic...", file=sys.stderr)
-    while not ready.wait(0.1):
-        if stop.is_set():
-            sub.close()
-            return None
-    sub.close()
-    return parse_urdf(got[0])
+    while not stop.is_set():
+        if topic.changed.wait(0.1):
+            text = topic.take()
+            desc = _parse(text) if text is not None else None
+            if desc is not None:
+                return desc
+    return None
+
+
+def _watch_descriptions(topic: _Descriptions, viewer: Any, stop: threading.Event) -> None:
+    # As rviz's RobotModel display: a new description on the topic replaces the robot.
+    while not stop.is_set():
+        if topic.changed.wait(0.2):
+            text = topic.take()
+            desc = _parse(text) if text is not None else None
+            if desc is not None:
+                viewer.set_description(desc)
 
 
 def _follow(node: Any, viewer: Any) -> Any:
     from robotmodel.msgs import JointState
 
-    known = set(viewer.model.variables) | set(viewer.model.mimics)
-
     def on_state(msg: JointState) -> None:
-        values = {n: float(p) for n, p in zip(msg.name, msg.position, strict=False) if n in known}
+        model = viewer.model  # read per message: a new robot_description replaces it
+        values = {n: float(p) for n, p in zip(msg.name, msg.position, strict=False)
+                  if n in model.variables or n in model.mimics}
         if values:
             viewer.display(values)
 
     return node.create_subscription(JointState, "joint_states", on_state, 10)
 
 
-def _tf_loop(buffer: Any, viewer: Any, fixed: str, stop: threading.Event) -> None:
+def _tf_loop(buffer: Any, viewer: Any, stop: threading.Event) -> None:
     from robotmodel.errors import TransformException
     from robotmodel.time import Time
 
     while not stop.wait(_TF_PERIOD):
+        fixed = viewer.description.root  # frames are placed from the robot's root, as rviz's fixed frame
         poses = {}
         for frame in buffer.all_frame_names():
             try:
@@ -99,12 +140,17 @@ def serve_live(args: argparse.Namespace, desc: Any, initial: dict[str, float], f
 
             node = Node("robotmodel_view", connect=args.connect)
             closers.append(node)
+        topic = None
         if desc is None:
-            desc = _wait_description(node, stop)
+            topic = _Descriptions(node)
+            closers.insert(0, topic)
+            desc = _wait_description(topic, stop)
             if desc is None:
                 return 0
         viewer = make_viewer(args, desc, initial, frames, serve=True)
         closers.insert(0, viewer)
+        if topic is not None:
+            threading.Thread(target=_watch_descriptions, args=(topic, viewer, stop), daemon=True).start()
         viewer.publishing, viewer.following = publish, follow
         if publish:
             from robotmodel.publishers import JointStatePublisher
@@ -121,7 +167,7 @@ def serve_live(args: argparse.Namespace, desc: Any, initial: dict[str, float], f
 
             buffer = Buffer()
             closers.insert(0, TransformListener(buffer, node))
-            thread = threading.Thread(target=_tf_loop, args=(buffer, viewer, desc.root, stop), daemon=True)
+            thread = threading.Thread(target=_tf_loop, args=(buffer, viewer, stop), daemon=True)
             thread.start()
         print(viewer.url, flush=True)
         if args.open:

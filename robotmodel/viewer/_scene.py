@@ -21,6 +21,7 @@ import numpy as np
 import numpy.typing as npt
 
 from robotmodel.errors import RobotModelError
+from robotmodel.kinematics import KinematicModel, KinematicState
 from robotmodel.model import Box, Cylinder, Geometry, Mesh, Pose, RobotDescription, Sphere
 from robotmodel.spatial import rpy_to_matrix
 from robotmodel.viewer import _protocol as wire
@@ -28,7 +29,7 @@ from robotmodel.viewer._materials import COLLISION_RGBA, DEFAULT_RGBA, PLACEHOLD
 from robotmodel.viewer._meshes import MeshData, load_mesh
 from robotmodel.viewer._resolve import resolve_mesh_uri
 
-__all__ = ["ProgressFn", "RobotScene", "build_scene", "frame_objects", "origin_matrix"]
+__all__ = ["ProgressFn", "RobotScene", "build_scene", "camera_position", "frame_objects", "origin_matrix"]
 
 log = logging.getLogger("robotmodel.viewer")
 
@@ -37,6 +38,16 @@ ProgressFn = Callable[[int, int, str], None]
 
 ROOT = "robot"
 _PLACEHOLDER_SIZE = (0.05, 0.05, 0.05)
+
+
+def camera_position(model: KinematicModel) -> list[float]:
+    """Where meshcat's camera starts so the robot (at its default pose) fills the view."""
+    state = KinematicState(model).update(model.default_positions())
+    points = np.array([state.link_pose(n).translation for n in model.link_names])
+    radius = float(np.max(np.linalg.norm(points, axis=1))) + 0.2
+    distance = max(0.6, 1.5 * radius)
+    direction = np.array([1.0, 0.55, 0.9])  # three.js is Y-up under meshcat's "rotated" camera node
+    return [float(x) for x in direction / np.linalg.norm(direction) * distance]
 
 
 def origin_matrix(origin: Pose) -> npt.NDArray[np.float64]:

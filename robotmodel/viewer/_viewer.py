@@ -14,10 +14,10 @@ import numpy as np
 import numpy.typing as npt
 
 from robotmodel.errors import UnknownLinkError
-from robotmodel.kinematics import KinematicModel, KinematicState, joint_transforms, static_transforms
+from robotmodel.kinematics import KinematicModel, joint_transforms, static_transforms
 from robotmodel.model import JointType, RobotDescription
 from robotmodel.viewer import _protocol as wire
-from robotmodel.viewer._scene import ProgressFn, RobotScene, build_scene, frame_objects, origin_matrix
+from robotmodel.viewer._scene import ROOT, ProgressFn, build_scene, camera_position, frame_objects, origin_matrix
 from robotmodel.viewer._server import SceneStore, ViewerServer
 from robotmodel.viewer._sliders import SliderJoint, slider_joints
 from robotmodel.viewer._static import static_page
@@ -46,38 +46,62 @@ class Viewer:
                  package_paths: Iterable[str] = (), cache_dir: Path | None = None,
                  progress: ProgressFn | None = None, collisions: bool = False, frames: FramesSpec = None,
                  max_rate: float = 30.0) -> None:
-        self.description = description
-        self.model = KinematicModel(description)
-        self.scene: RobotScene = build_scene(description, package_paths=list(package_paths), cache_dir=cache_dir,
-                                             progress=progress)
-        self.sliders: list[SliderJoint] = slider_joints(self.model)
         self.publishing = False
         self.following = False
+        self._build_options: dict[str, Any] = {"package_paths": list(package_paths), "cache_dir": cache_dir,
+                                               "progress": progress}
         self._min_period = 1.0 / max_rate
         self._lock = threading.Lock()
         self._store = SceneStore()
-        self._sent: dict[str, npt.NDArray[np.float64]] = {}
-        self._positions = {s.name: s.zero for s in self.sliders}
-        self._positions.update({n: v for n, v in self.model.default_positions().items() if n not in self._positions})
-        self._extra: dict[str, float] = {}
         self._pending: tuple[dict[str, float], int | None] | None = None
         self._flush_scheduled = False
         self._last_flush = 0.0
         self._callbacks: list[JointCallback] = []
-        self._frames: list[str] = []
-        self._frame_objects: set[str] = set()
         self._frame_size = 0.1
         self._tf: dict[str, npt.NDArray[np.float64]] = {}
         self._collisions = collisions
-        with self._lock:
-            self._fill_store()
-            self._apply(self._positions)
-            self._set_frames(frames)
-            self._set_group_visibility("collision", collisions)
+        self._install(description, frames)
         self._server: ViewerServer | None = None
         if serve:
             self._server = ViewerServer(self._store, title=description.name, config=self._config,
                                         on_message=self._on_page_message, port=port)
+
+    def _install(self, description: RobotDescription, frames: FramesSpec) -> list[bytes]:
+        """Build ``description``'s scene and make it current; returns the commands that draw it."""
+        model = KinematicModel(description)
+        scene = build_scene(description, **self._build_options)
+        with self._lock:
+            self.description, self.model, self.scene = description, model, scene
+            self.sliders: list[SliderJoint] = slider_joints(model)
+            self._positions = {s.name: s.zero for s in self.sliders}
+            self._positions.update({n: v for n, v in model.default_positions().items() if n not in self._positions})
+            self._extra: dict[str, float] = {}
+            self._sent: dict[str, npt.NDArray[np.float64]] = {}
+            self._frames: list[str] = []
+            self._frame_objects: set[str] = set()
+            self._store.drop(wire.path_of(ROOT))
+            self._fill_store()
+            self._apply(self._positions)
+            self._set_frames(frames)
+            self._set_group_visibility("collision", self._collisions)
+            return [wire.delete(wire.path_of(ROOT)), *self._store.commands()]
+
+    def set_description(self, description: RobotDescription) -> None:
+        """Show another robot (a new /robot_description, say): scene, sliders and pages are rebuilt."""
+        names = {link.name for link in description.links}
+        with self._lock:
+            every = len(self._frames) == len(self.scene.link_paths)
+            frames: FramesSpec = "all" if every else [n for n in self._frames if n in names]
+        commands = self._install(description, frames)
+        server = self._server
+        if server is not None:
+            server.title = description.name
+
+            def redraw() -> None:
+                server.broadcast_text({"type": "config", **self._config()})
+                server.broadcast(commands)
+
+            server.call_soon(redraw)
 
     # ----- building -------------------------------------------------------------------------------------------
 
@@ -97,15 +121,7 @@ class Viewer:
             if joint.type is JointType.FLOATING and joint.child in paths:
                 store.transforms[paths[joint.child]] = wire.set_transform(paths[joint.child],
                                                                           origin_matrix(joint.origin))
-        store.properties[(_CAMERA, "position")] = wire.set_property(_CAMERA, "position", self._camera_position())
-
-    def _camera_position(self) -> list[float]:
-        state = KinematicState(self.model).update(self.model.default_positions())
-        points = np.array([state.link_pose(n).translation for n in self.model.link_names])
-        radius = float(np.max(np.linalg.norm(points, axis=1))) + 0.2
-        distance = max(0.6, 1.5 * radius)
-        direction = np.array([1.0, 0.55, 0.9])  # three.js is Y-up under meshcat's "rotated" node
-        return [float(x) for x in direction / np.linalg.norm(direction) * distance]
+        store.properties[(_CAMERA, "position")] = wire.set_property(_CAMERA, "position", camera_position(self.model))
 
     def _config(self) -> dict[str, Any]:
         return {

@@ -17,6 +17,7 @@ import umsgpack
 from conftest import BUNDLED, ERD_ROBOTS
 from pytransform3d.rotations import matrix_from_axis_angle, matrix_from_euler
 
+from robotmodel.errors import JointValueError
 from robotmodel.kinematics import KinematicModel
 from robotmodel.model import load, parse_urdf
 from robotmodel.viewer import Viewer, load_mesh, slider_joints
@@ -184,3 +185,15 @@ def test_command_modules_import_nothing_heavy() -> None:
             "print(sorted(m for m in ('meshcat', 'trimesh', 'pinocchio', 'tornado', 'zenoh') if m in sys.modules))")
     result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60, check=True)
     assert result.stdout.strip() == "[]"
+
+
+def test_set_description_replaces_the_robot() -> None:
+    viewer = Viewer(load(ARM), serve=False, frames="all")
+    viewer.set_description(load(BUNDLED / "diffbot.urdf.xacro"))
+    _, objects = _decode(viewer)
+    links = {p.split("/<")[0].rsplit("/", 1)[-1] for p in objects if p.startswith("/robot/")}
+    assert links == {link.name for link in load(BUNDLED / "diffbot.urdf.xacro").links}
+    assert [s.name for s in viewer.sliders] == ["left_wheel_joint", "right_wheel_joint"]
+    viewer.display({"left_wheel_joint": 1.0})
+    with pytest.raises(JointValueError, match="arm_shoulder_joint"):
+        viewer.display({"arm_shoulder_joint": 1.0})
