@@ -176,6 +176,8 @@ class Buffer(BufferCore):
 
     def transform(self, object_stamped: Stamped, target_frame: str, timeout: Any = None) -> Stamped:
         """A PointStamped/PoseStamped/Vector3Stamped expressed in ``target_frame`` (tf2_geometry_msgs)."""
+        if not isinstance(object_stamped, PointStamped | PoseStamped | Vector3Stamped):
+            raise InvalidArgumentException(f"Type {type(object_stamped).__name__} is not loaded or supported")
         header = object_stamped.header
         msg = self.lookup_transform(target_frame, header.frame_id, header.stamp, timeout)
         t_target_source: Pose7 = _pose7(msg)
@@ -199,7 +201,7 @@ class Buffer(BufferCore):
             pos.x, pos.y, pos.z = out[0], out[1], out[2]
             ori.x, ori.y, ori.z, ori.w = out[3], out[4], out[5], out[6]
             return result
-        raise TypeError(f"Type {type(object_stamped).__name__} is not loaded or supported")
+        raise InvalidArgumentException(f"Type {type(object_stamped).__name__} is not loaded or supported")
 
     def lookup_transforms(self, target_frame: str, source_frame: str,
                           times: npt.ArrayLike) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:

@@ -74,15 +74,19 @@ class BufferCore(FrameGraph):
     # ----------------------------------------------------------------- insert
     def set_transform(self, transform: TransformStamped, authority: str, is_static: bool = False) -> bool:
         """Insert a TransformStamped (an adapter over :meth:`insert`); False when tf2 would drop it."""
-        tr = transform.transform.translation
-        rot = transform.transform.rotation
-        stamp = transform.header.stamp
+        try:
+            tr = transform.transform.translation
+            rot = transform.transform.rotation
+            stamp = transform.header.stamp
+            pose = (tr.x, tr.y, tr.z, rot.x, rot.y, rot.z, rot.w)
+        except AttributeError as exc:
+            raise InvalidArgumentException(f"Invalid argument passed to setTransform - not a TransformStamped "
+                                           f"({exc})") from None
         try:
             ns = stamp.sec * 1_000_000_000 + stamp.nanosec  # a stamp message (checked by insert)
         except (AttributeError, TypeError):
             ns = time_arg_ns(stamp, f'setTransform argument stamp of child_frame_id "{transform.child_frame_id}"')
-        return self.insert(transform.header.frame_id, transform.child_frame_id, ns,
-                           (tr.x, tr.y, tr.z, rot.x, rot.y, rot.z, rot.w), authority, is_static)
+        return self.insert(transform.header.frame_id, transform.child_frame_id, ns, pose, authority, is_static)
 
     def insert(self, parent: str, child: str, stamp_ns: int, pose: Iterable[float], authority: str,
                is_static: bool = False) -> bool:
@@ -92,6 +96,9 @@ class BufferCore(FrameGraph):
         NaN, a zero quaternion, data older than the window (TF_OLD_DATA). A stamp outside
         [0, 2**63) ns or a pose that is not 7 numbers raises InvalidArgumentException.
         """
+        if type(parent) is not str or type(child) is not str:
+            raise InvalidArgumentException(f"Invalid argument passed to setTransform - frame ids must be strings, "
+                                           f"got {parent!r} and {child!r}")
         if parent[:1] == "/":
             parent = parent[1:]
         if child[:1] == "/":
@@ -144,6 +151,9 @@ class BufferCore(FrameGraph):
         validation, logs, canonical quaternions, pruning, TF_OLD_DATA and duplicates);
         strictly increasing stamps newer than the frame's data are stored in one step.
         """
+        if type(parent) is not str or type(child) is not str:
+            raise InvalidArgumentException(f"Invalid argument passed to insert_many - frame ids must be strings, "
+                                           f"got {parent!r} and {child!r}")
         if parent[:1] == "/":
             parent = parent[1:]
         if child[:1] == "/":

@@ -116,3 +116,17 @@ def test_extrapolation_exception_says_its_direction() -> None:
     with pytest.raises(ExtrapolationException, match=r"but only time 0\.000000") as info:
         buf.lookup_transform("a", "b", Time(seconds=11))
     assert info.value.direction is ExtrapolationDirection.NO_DATA
+
+
+def test_malformed_inputs_are_tf2_exceptions() -> None:
+    buf = Buffer()
+    with pytest.raises(InvalidArgumentException, match="not a TransformStamped"):
+        buf.set_transform(object(), "me")
+    with pytest.raises(InvalidArgumentException, match="frame ids must be strings"):
+        buf.insert(None, "b", SEC, (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0), "me")
+    with pytest.raises(InvalidArgumentException, match="frame_id is a string"):
+        buf.lookup_transform(3, "b", Time())
+    assert buf.can_transform(None, "b", Time()) is False
+    buf.set_transform(make("a", "b", sec=1), "me")
+    with pytest.raises(InvalidArgumentException, match="Type str is not loaded or supported"):
+        buf.transform("not a stamped message", "a")
