@@ -22,6 +22,7 @@ class Graph:
     def __init__(self, backend: Backend, domain_id: int, timeout: float = 1.0) -> None:
         self._lock = threading.Condition()
         self._entities: dict[str, Entity] = {}
+        self._by_gid: dict[bytes, Entity] = {}
         pattern = f"{ADMIN_SPACE}/{domain_id}/**"
         self._watch: Handle = backend.watch_tokens(pattern, self._on_token)
         for token in backend.get_tokens(pattern, timeout):
@@ -30,18 +31,26 @@ class Graph:
     def _on_token(self, token: str, alive: bool) -> None:
         with self._lock:
             if not alive:
-                self._entities.pop(token, None)
+                gone = self._entities.pop(token, None)
+                if gone is not None:
+                    self._by_gid.pop(gone.gid, None)
             else:
                 try:
-                    self._entities[token] = Entity.parse(token)
+                    entity = self._entities[token] = Entity.parse(token)
                 except BusError:
                     return  # not ours to read (another tool's token under @ros2_lv)
+                self._by_gid[entity.gid] = entity
             self._lock.notify_all()
 
     def entities(self) -> list[Entity]:
         """Every live entity (nodes, publishers, subscriptions, services, clients)."""
         with self._lock:
             return list(self._entities.values())
+
+    def by_gid(self, gid: bytes) -> Entity | None:
+        """The live entity with this GID (as a sample's attachment carries it), if any."""
+        with self._lock:
+            return self._by_gid.get(gid)
 
     def wait_for(self, predicate: Callable[[list[Entity]], bool], timeout: float) -> bool:
         """Wait until ``predicate(entities)`` holds; False at the timeout."""

@@ -13,7 +13,7 @@
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from enum import StrEnum
 
 import xxhash
@@ -139,7 +139,8 @@ class Entity:
 
     ``namespace`` and ``enclave`` are ROS names ('/' for the root). For topic entities,
     ``topic`` is the fully qualified topic, ``typename`` the ROS type (``pkg/msg/Name``)
-    and ``type_hash`` its RIHS01 text.
+    and ``type_hash`` its RIHS01 text. ``token`` is the liveliness token an entity was read
+    from (:meth:`parse`); its GID is the hash of that exact text, whoever wrote it.
     """
 
     domain_id: int
@@ -154,6 +155,7 @@ class Entity:
     typename: str = ""
     type_hash: str = ""
     qos: QoS | None = None
+    token: str = field(default="", compare=False, repr=False)
 
     @property
     def keyexpr(self) -> str:
@@ -172,7 +174,7 @@ class Entity:
     @property
     def gid(self) -> bytes:
         """The entity's 16-byte GID (what its messages carry in their attachment)."""
-        return gid_of(self.keyexpr)
+        return gid_of(self.token or self.keyexpr)
 
     @property
     def node_fqn(self) -> str:
@@ -191,7 +193,7 @@ class Entity:
         except ValueError as exc:
             raise BusError(f"not an rmw_zenoh liveliness token: '{token}'") from exc
         base = cls(domain_id, parts[2], node_id, entity_id, kind, demangle(parts[7]), demangle(parts[8]),
-                   demangle(parts[6]))
+                   demangle(parts[6]), token=token)
         if kind is EntityKind.NODE:
             return base
         if len(parts) < 13:
@@ -199,5 +201,5 @@ class Entity:
         return cls(
             base.domain_id, base.zid, base.node_id, base.entity_id, kind, base.namespace, base.node_name,
             base.enclave, demangle(parts[9]), ros_type_name(demangle(parts[10])), demangle(parts[11]),
-            qos_from_keyexpr(parts[12]),
+            qos_from_keyexpr(parts[12]), token,
         )

@@ -18,6 +18,7 @@ from robotmodel.bus import (
     RawMessage,
     TFRecords,
     codec_for,
+    gid_of,
     typestore,
 )
 from robotmodel.msgs import TFMessage, make_transform
@@ -182,3 +183,27 @@ def test_tf_records_share_the_tfmessage_key_and_bytes() -> None:
     parent, child, stamp_ns, pose = records[0][0]
     assert (parent, child, stamp_ns, pose) == ("a", "b", 7_000_000_001, (1.0, 2.0, 3.0, 0.0, 0.0, 0.6, 0.8))
     assert messages[0] == messages[1]
+
+
+def test_graph_finds_a_publisher_by_the_gid_in_its_samples() -> None:
+    got: list[RawMessage] = []
+    with Node("talker", "/ns", backend="inprocess", domain_id=113) as node:
+        node.create_raw_subscription("chatter", got.append)
+        pub = node.create_publisher(String, "chatter")
+        pub.publish(String(data="x"))
+        entity = node.context.graph.by_gid(got[0].attachment.gid)
+        assert entity is not None
+        assert (entity.node_fqn, entity.topic) == ("/ns/talker", "/ns/chatter")
+        assert node.context.graph.by_gid(bytes(16)) is None
+
+
+def test_gid_hashes_the_token_as_written() -> None:
+    from robotmodel.bus import Entity
+
+    # Another implementation may spell an equal QoS differently; the GID follows its text.
+    token = ("@ros2_lv/0/8b20917502ee955ac4476e0266340d5c/0/10/MP/%/%/talker/%chatter/"
+             "std_msgs::msg::dds_::String_/RIHS01_df668c740482bbd48fb39d76a70dfd4bd59db1288021743503259e948f6b1a18/"
+             "1:2:1,7:,:,:,,")
+    entity = Entity.parse(token)
+    assert entity.keyexpr != token  # ours leaves the default reliability and durability empty
+    assert entity.gid == gid_of(token)
