@@ -388,6 +388,8 @@ def _robot(robot: ET.Element, text: str, source: str | None) -> RobotDescription
             raise URDFError(f"joint '{joint.name}' is not unique.")
         joints[joint.name] = joint
     # Construction checks the tree (and everything else again, cheaply).
-    return RobotDescription(
-        name, tuple(links.values()), tuple(joints.values()), tuple(materials.values()), text, source,
-    )
+    desc = RobotDescription(name, tuple(links.values()), tuple(joints.values()), tuple(materials.values()),
+                            source)
+    # Provenance: set after construction, as it is no constructor argument (see RobotDescription).
+    object.__setattr__(desc, "source_text", text)
+    return desc

@@ -222,16 +222,20 @@ class RobotDescription:
     (one tree, unique names, limits, finite numbers, no mimic cycles), raising
     :class:`robotmodel.errors.URDFError`.
 
-    Provenance only, never read by any engine: ``source_text`` is the URDF XML the
-    description was parsed from (after xacro expansion), ``source`` the file it came from.
+    Provenance only, never read by any engine: ``source`` is the file the description came
+    from, ``source_text`` the URDF XML it was parsed from (after xacro expansion). Only
+    :func:`~robotmodel.model.parse_urdf` sets ``source_text``; a description built or
+    changed (``dataclasses.replace``) in Python has none.
     """
 
     name: str
     links: tuple[Link, ...]
     joints: tuple[Joint, ...]
     materials: tuple[Material, ...] = ()
-    source_text: str = field(default="", repr=False, compare=False)
     source: str | None = field(default=None, compare=False)
+    # Not an __init__ argument, so dataclasses.replace leaves it empty: a changed robot has
+    # no source text (publishers then send to_urdf of it), never its original's stale one.
+    source_text: str = field(default="", init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         from robotmodel.model._validate import validate_description

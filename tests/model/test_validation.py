@@ -7,6 +7,7 @@ too) and parsed. Both ways must fail with the same message text.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from types import SimpleNamespace
 
@@ -112,8 +113,6 @@ def test_mimic_of_missing_joint_accepted_both_ways() -> None:
 
 
 def test_replace_is_validated_too() -> None:
-    import dataclasses
-
     desc = RobotDescription("r", _links("a", "b"), (_rev("j", "a", "b"),))
     with pytest.raises(URDFError, match=r"child link \[c\] of joint \[j\] not found"):
         dataclasses.replace(desc, joints=(_rev("j", "a", "c"),))
@@ -134,3 +133,7 @@ def test_source_text_is_provenance_only() -> None:
     desc = parse_urdf(text)
     assert desc.source_text == text
     assert not hasattr(desc, "urdf")
+    # A changed robot is not the text any more: it carries no stale source text.
+    changed = dataclasses.replace(desc, name="other")
+    assert changed.source_text == ""
+    assert RobotDescription("r", desc.links, ()).source_text == ""
