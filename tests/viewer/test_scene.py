@@ -197,3 +197,37 @@ def test_set_description_replaces_the_robot() -> None:
     viewer.display({"left_wheel_joint": 1.0})
     with pytest.raises(JointValueError, match="arm_shoulder_joint"):
         viewer.display({"arm_shoulder_joint": 1.0})
+
+
+def test_collada_unit_rescales_as_rviz_does(tmp_path: Path) -> None:
+    original = ERD_ROBOTS / "panda_description" / "meshes" / "visual" / "hand.dae"
+    text = original.read_text()
+    assert 'meter="1"' in text
+    millimetres = tmp_path / "hand_mm.dae"
+    millimetres.write_text(text.replace('meter="1"', 'meter="0.001"', 1))
+    metres, _ = load_mesh(original, tmp_path / "cache")
+    scaled, _ = load_mesh(millimetres, tmp_path / "cache")
+    np.testing.assert_allclose(scaled.vertices, metres.vertices * 0.001, rtol=1e-6)
+
+
+def test_obj_meshes_load_through_trimesh(tmp_path: Path) -> None:
+    stl = ERD_ROBOTS / "panda_description" / "meshes" / "collision" / "link2.stl"
+    obj = tmp_path / "link2.obj"
+    trimesh.load(stl).export(obj)
+    data, _ = load_mesh(obj, tmp_path / "cache")
+    reference = trimesh.load(obj, force="mesh")
+    assert len(data.faces) == len(reference.faces)
+    np.testing.assert_allclose(data.vertices.min(axis=0), reference.bounds[0], rtol=1e-5, atol=1e-6)
+    assert not data.own.any()  # no .mtl: the URDF colour applies
+
+
+def test_collisions_toggle() -> None:
+    viewer = Viewer(load(PANDA), serve=False)
+
+    def visible() -> set[bool]:
+        return {umsgpack.unpackb(c)["value"] for c in viewer.commands()
+                if umsgpack.unpackb(c)["type"] == "set_property" and "<collision>" in umsgpack.unpackb(c)["path"]}
+
+    assert visible() == {False}
+    viewer.show_collisions(True)
+    assert visible() == {True}
