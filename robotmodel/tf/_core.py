@@ -230,9 +230,21 @@ class BufferCore(FrameGraph):
                     cache = self._caches[fid]
                     stamp = cache.latest()[0] if cache is not None else 0
                 return IDENTITY, stamp
-            target_id = self._validate(target, "lookupTransform argument target_frame")
-            source_id = self._validate(source, "lookupTransform argument source_frame")
-            return self._lookup_ids(target_id, source_id, time_ns, target, source)
+            ids = self._ids
+            try:
+                target_id, source_id = ids.get(target), ids.get(source)
+            except TypeError:  # unhashable: not a frame name (the checks below say so)
+                target_id = source_id = None
+            # Known names are valid unless they start with '/' (a "//x" inserted as "/x"): check only then.
+            if not target_id or target[0] == "/":
+                target_id = self._validate(target, "lookupTransform argument target_frame")
+            if not source_id or source[0] == "/":
+                source_id = self._validate(source, "lookupTransform argument source_frame")
+            if time_ns == 0:
+                time_ns = self._latest_common_time(target_id, source_id, target, source)
+            pose = self._walk(time_ns, target_id, source_id, target, source)
+            qx, qy, qz, qw = quat_canonical(pose[3:])
+            return (pose[0], pose[1], pose[2], qx, qy, qz, qw), time_ns
 
     def _lookup_ids(self, target_id: int, source_id: int, time_ns: int, target: str,
                     source: str) -> tuple[Pose7, int]:
