@@ -231,3 +231,16 @@ def test_collisions_toggle() -> None:
     assert visible() == {False}
     viewer.show_collisions(True)
     assert visible() == {True}
+
+
+def test_a_port_in_use_is_one_line_error() -> None:
+    import socket
+
+    with socket.socket() as taken:
+        taken.bind(("127.0.0.1", 0))
+        taken.listen()
+        port = taken.getsockname()[1]
+        result = _cli("view", str(BUNDLED / "diffbot.urdf.xacro"), "--port", str(port))
+    assert result.returncode == 1
+    assert result.stderr == f"robotmodel view: error: cannot listen on 127.0.0.1: port {port} in use " \
+                            "(Address already in use)\n"
