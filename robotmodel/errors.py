@@ -22,6 +22,9 @@ caller (and the CLI) can catch one class and print one line. The tree::
     │                               publish_frequency (ROS's text; also a ValueError)
     ├── ViewerError                 the viewer: no browser for a screenshot, a port in use, a
     │                               page that did not load (see robotmodel.viewer)
+    ├── RecordingError              a recording that cannot be read (truncated, corrupt, empty,
+    │                               wrong format, a topic of another type) or written; names
+    │                               the file and what was read (see robotmodel.recording)
     └── TransformException          tf2's root (see robotmodel.tf)
         ├── LookupException
         ├── ConnectivityException
@@ -50,6 +53,7 @@ __all__ = [
     "MessageError",
     "PackageNotFoundError",
     "PublisherError",
+    "RecordingError",
     "ResourceError",
     "RobotModelError",
     "TimeoutException",
@@ -125,6 +129,10 @@ class PublisherError(RobotModelError, ValueError):
 
 class ViewerError(RobotModelError):
     """The viewer could not do what was asked: no browser found, a port in use, a page that did not load."""
+
+
+class RecordingError(RobotModelError):
+    """A recording could not be read or written; the text names the file and what was read before."""
 
 
 class BusError(RobotModelError):

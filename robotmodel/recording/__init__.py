@@ -1,0 +1,29 @@
+"""TF from recordings (ROS 1 bags, ROS 2 bags, MCAP) and recording the bus to MCAP.
+
+- :func:`load_buffer` / :func:`load_recording`: a recording's /tf, /tf_static (and
+  /joint_states through the kinematics) in an unbounded :class:`robotmodel.tf.Buffer`,
+  streamed and inserted in bulk.
+- :class:`Recording`: any supported file opened with rosbags, its topics and raw messages.
+- :func:`pose_series` and :func:`write_poses`: a frame pair's poses over time, to CSV or Parquet.
+- :class:`McapWriter` and :class:`Recorder`: MCAP files in rosbag2's ros2 profile (CDR),
+  written from the bus, crash-tolerant chunk by chunk.
+
+The core (:mod:`robotmodel.tf`) does not depend on this package: a buffer is filled from
+here, not the other way round.
+"""
+
+from __future__ import annotations
+
+from robotmodel.recording._load import DEFAULT_TOPICS, Loaded, load_buffer, load_recording
+from robotmodel.recording._open import Format, Recording, Topic, detect_format
+
+__all__ = [
+    "DEFAULT_TOPICS",
+    "Format",
+    "Loaded",
+    "Recording",
+    "Topic",
+    "detect_format",
+    "load_buffer",
+    "load_recording",
+]

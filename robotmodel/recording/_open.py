@@ -1,0 +1,193 @@
+r"""Opening a recording with rosbags, whatever its format, and reading its messages raw.
+
+Formats, told by their first bytes rather than their names: ROS 1 ``.bag``
+(``#ROSBAG V2.0``), bare MCAP (``\x89MCAP0``), bare sqlite3 ``.db3`` (``SQLite format 3``)
+and ROS 2 bag folders (``metadata.yaml`` with ``.db3`` or ``.mcap`` storage). Every
+failure of rosbags (or of the file system) becomes one :class:`RecordingError` naming the
+file and how many messages were read before it.
+"""
+
+from __future__ import annotations
+
+import struct
+from collections.abc import Collection, Iterator
+from dataclasses import dataclass
+from enum import Enum
+from functools import lru_cache
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from robotmodel.errors import RecordingError
+
+if TYPE_CHECKING:
+    from rosbags.typesys.store import Typestore
+
+__all__ = ["Format", "Recording", "Topic", "detect_format", "ros1_typestore"]
+
+_ROS1_MAGIC = b"#ROSBAG V2.0\n"
+_MCAP_MAGIC = b"\x89MCAP0\r\n"
+_SQLITE_MAGIC = b"SQLite format 3\x00"
+_TFMESSAGE_ROS1 = "geometry_msgs/TransformStamped[] transforms"
+
+
+class Format(Enum):
+    """The container of a recording."""
+
+    ROS1_BAG = "ROS 1 bag"
+    MCAP = "MCAP"
+    SQLITE3 = "ROS 2 sqlite3 bag"
+    ROS2_FOLDER = "ROS 2 bag folder"
+
+
+@dataclass(frozen=True, slots=True)
+class Topic:
+    """One topic of a recording: its name, ROS 2 type name and message count."""
+
+    name: str
+    msgtype: str
+    count: int
+
+
+def detect_format(path: Path) -> Format:
+    """The format of ``path`` from its first bytes; :class:`RecordingError` when none fits."""
+    if path.is_dir():
+        if (path / "metadata.yaml").is_file():
+            return Format.ROS2_FOLDER
+        raise RecordingError(f"{path}: not a recording (a folder without metadata.yaml)")
+    try:
+        with path.open("rb") as f:
+            head = f.read(16)
+    except OSError as exc:
+        raise RecordingError(f"{path}: cannot read: {exc.strerror or exc}") from None
+    if not head:
+        raise RecordingError(f"{path}: empty file, not a recording")
+    if head.startswith(_ROS1_MAGIC[:len(head)]) and len(head) >= 13:
+        return Format.ROS1_BAG
+    if head.startswith(_MCAP_MAGIC):
+        return Format.MCAP
+    if head.startswith(_SQLITE_MAGIC):
+        return Format.SQLITE3
+    raise RecordingError(f"{path}: not a recording (neither a ROS 1 bag, an MCAP file nor a ROS 2 sqlite3 bag)")
+
+
+@lru_cache(maxsize=1)
+def ros1_typestore() -> Typestore:
+    """Rosbags' ROS 1 Noetic typestore with tf2_msgs/TFMessage added (Noetic's store lacks it)."""
+    from rosbags.typesys import Stores, get_types_from_msg, get_typestore
+
+    store = get_typestore(Stores.ROS1_NOETIC)
+    if "tf2_msgs/msg/TFMessage" not in store.types:
+        store.register(get_types_from_msg(_TFMESSAGE_ROS1, "tf2_msgs/msg/TFMessage"))
+    return store
+
+
+def _reader_errors() -> tuple[type[BaseException], ...]:
+    from rosbags.rosbag1 import ReaderError as Ros1Error
+    from rosbags.rosbag2 import ReaderError as Ros2Error
+
+    # Damaged files surface from rosbags' parsers and the decompressors as many types.
+    return (Ros1Error, Ros2Error, OSError, EOFError, ValueError, KeyError, IndexError, struct.error,
+            AssertionError, TypeError, AttributeError, RuntimeError, MemoryError)
+
+
+def _reason(exc: BaseException) -> str:
+    text = " ".join(str(exc).split()) or type(exc).__name__
+    return text[:200]
+
+
+class Recording:
+    """An open recording: its format, topics and a stream of its raw messages.
+
+    >>> with Recording("run.mcap") as rec:            # doctest: +SKIP
+    ...     for topic, t, data in rec.messages(["/tf"]):
+    ...         ...
+    """
+
+    def __init__(self, path: str | Path) -> None:
+        self.path = Path(path)
+        self.format = detect_format(self.path)
+        self.ros1 = self.format is Format.ROS1_BAG
+        self.read = 0  # messages delivered so far (named in errors)
+        errors = _reader_errors()
+        try:
+            if self.ros1:
+                from rosbags.rosbag1 import Reader as Ros1Reader
+
+                self._reader: Any = Ros1Reader(self.path)
+            else:
+                from rosbags.rosbag2 import Reader as Ros2Reader
+
+                self._reader = Ros2Reader(self.path)
+            self._reader.open()
+        except errors as exc:
+            raise RecordingError(f"{self.path}: cannot open as a {self.format.value}: {_reason(exc)}") from None
+        self._connections: dict[str, list[Any]] = {}
+        for conn in self._reader.connections:
+            self._connections.setdefault(conn.topic, []).append(conn)
+
+    def __enter__(self) -> Recording:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    def close(self) -> None:
+        """Close the file (idempotent)."""
+        try:
+            self._reader.close()
+        except _reader_errors():
+            pass
+
+    @property
+    def message_count(self) -> int:
+        """Messages in the whole recording, from its index."""
+        return int(self._reader.message_count)
+
+    def topics(self) -> list[Topic]:
+        """Topics with their type and count, by name."""
+        out = []
+        for name in sorted(self._connections):
+            conns = self._connections[name]
+            out.append(Topic(name, conns[0].msgtype, sum(int(c.msgcount) for c in conns)))
+        return out
+
+    def msgtype(self, topic: str) -> str | None:
+        """The ROS 2 type name recorded for ``topic`` (None when absent)."""
+        conns = self._connections.get(topic)
+        return conns[0].msgtype if conns else None
+
+    def check_type(self, topic: str, expected: str) -> bool:
+        """Whether ``topic`` is present; :class:`RecordingError` if it has another type than ``expected``."""
+        conns = self._connections.get(topic, [])
+        for conn in conns:
+            if conn.msgtype != expected:
+                raise RecordingError(f"{self.path}: topic {topic} has type {conn.msgtype}, expected {expected} "
+                                     "(nothing read)")
+        return bool(conns)
+
+    def messages(self, topics: Collection[str]) -> Iterator[tuple[str, int, bytes]]:
+        """(topic, log time ns, raw bytes) of the messages on ``topics``, in log-time order."""
+        conns = [c for t in topics for c in self._connections.get(t, ())]
+        if not conns:
+            return
+        errors = _reader_errors()
+        try:
+            for conn, t, data in self._reader.messages(connections=conns):
+                yield conn.topic, t, data
+                self.read += 1
+        except errors as exc:
+            raise self.damaged(exc) from None
+
+    def damaged(self, exc: BaseException, last_ns: int | None = None) -> RecordingError:
+        """The error for a file that failed mid-read: what broke and how much was read."""
+        where = f", up to t={last_ns / 1e9:.9f}" if last_ns is not None else ""
+        return RecordingError(f"{self.path}: truncated or corrupt {self.format.value} after {self.read} "
+                              f"message(s){where}: {_reason(exc)}")
+
+    def deserialize(self, data: bytes, msgtype: str) -> Any:
+        """A rosbags message object of ``msgtype`` from this recording's serialization."""
+        if self.ros1:
+            return ros1_typestore().deserialize_ros1(data, msgtype)
+        from robotmodel.msgs import typestore
+
+        return typestore().deserialize_cdr(data, msgtype)
