@@ -20,7 +20,7 @@ import numpy.typing as npt
 __all__ = ["MeshData", "default_cache_dir", "load_mesh"]
 
 # Bump when the stored layout or the conversion changes, so old entries are ignored.
-_CACHE_VERSION = "1"
+_CACHE_VERSION = "2"
 _UNIT_RE = re.compile(rb"<unit\b[^>]*\bmeter\s*=\s*\"([^\"]+)\"")
 
 
@@ -75,6 +75,18 @@ def _part_colour(mesh: Any) -> tuple[npt.NDArray[np.float32], bool]:
         rgb = np.asarray(visual.vertex_colors, dtype=np.float32)[:, :3] / 255.0
         return rgb, True
     material = getattr(visual, "material", None)
+    texture = getattr(material, "image", None)
+    if texture is None:
+        texture = getattr(material, "baseColorTexture", None)
+    if kind == "texture" and texture is not None and getattr(visual, "uv", None) is not None:
+        # Textures are baked into per-vertex colours (sampled at the UVs): an approximation,
+        # but far closer than the material's plain colour (often white under a texture).
+        try:
+            rgb = np.asarray(visual.to_color().vertex_colors, dtype=np.float32)
+            if rgb.shape[:1] == (n,) and rgb.ndim == 2:
+                return rgb[:, :3] / 255.0, True
+        except (ValueError, TypeError, IndexError):
+            pass  # a texture trimesh cannot sample: fall back to the material's colour
     main = getattr(material, "main_color", None)
     if main is not None:
         rgb = np.asarray(main, dtype=np.float32)[:3] / 255.0

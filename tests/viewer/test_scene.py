@@ -244,3 +244,21 @@ def test_a_port_in_use_is_one_line_error() -> None:
     assert result.returncode == 1
     assert result.stderr == f"robotmodel view: error: cannot listen on 127.0.0.1: port {port} in use " \
                             "(Address already in use)\n"
+
+
+def test_textures_become_vertex_colours(tmp_path: Path) -> None:
+    dae = ERD_ROBOTS / "anymal_c_simple_description" / "meshes" / "base.dae"
+    scene = trimesh.load(dae, force="scene")
+    parts = [scene.geometry[scene.graph[node][1]] for node in scene.graph.nodes_geometry]
+    textured = next(i for i, g in enumerate(parts) if getattr(g.visual.material, "baseColorTexture", None) is not None)
+    data, _ = load_mesh(dae, tmp_path / "cache")
+    start = sum(len(g.vertices) for g in parts[:textured])
+    part = parts[textured]
+    ours = data.colors[start:start + len(part.vertices)] * 255
+    # The texture sampled by hand at each vertex's UV (nearest texel, V up).
+    image = np.asarray(part.visual.material.baseColorTexture.convert("RGB"))
+    h, w = image.shape[:2]
+    uv = np.asarray(part.visual.uv) % 1.0
+    texels = image[((1 - uv[:, 1]) * (h - 1)).round().astype(int), (uv[:, 0] * (w - 1)).round().astype(int)]
+    np.testing.assert_allclose(ours.mean(axis=0), texels.mean(axis=0), atol=8)
+    assert ours.mean() < 200  # not the material's plain white
