@@ -50,22 +50,33 @@ class MimicRule:
 
 def _resolve_mimics(desc: RobotDescription) -> dict[str, MimicRule]:
     by_name = {j.name: j for j in desc.joints}
+    # Each joint's value as (master, multiplier, offset), memoized so that every chain is
+    # walked once: O(joints) even for one long chain of mimics.
+    resolved: dict[str, tuple[str, float, float]] = {}
+    for joint in desc.joints:
+        path: list[str] = []
+        current = joint
+        # Construction of the description rejected cycles; the bound keeps a bad one from looping.
+        while current.name not in resolved:
+            if len(path) > len(by_name):
+                raise KinematicsError(f"mimic joints of robot '{desc.name}' form a cycle through [{joint.name}]")
+            mimic = current.mimic
+            if mimic is None or mimic.joint not in by_name:
+                resolved[current.name] = (current.name, 1.0, 0.0)
+                break
+            path.append(current.name)
+            current = by_name[mimic.joint]
+        for name in reversed(path):
+            mimic = by_name[name].mimic
+            assert mimic is not None
+            master, multiplier, offset = resolved[mimic.joint]
+            resolved[name] = (master, mimic.multiplier * multiplier, mimic.multiplier * offset + mimic.offset)
     rules: dict[str, MimicRule] = {}
     for joint in desc.joints:
         if joint.mimic is None or joint.type not in _ONE_DOF or joint.mimic.joint not in by_name:
             continue
-        multiplier, offset, master = 1.0, 0.0, joint
-        # Walk the chain to an independent joint, composing the affine maps. Construction
-        # of the description rejected cycles; the bound keeps a bad one from looping.
-        for _ in range(len(by_name) + 1):
-            if master.mimic is None or master.mimic.joint not in by_name:
-                break
-            multiplier, offset = (multiplier * master.mimic.multiplier,
-                                  multiplier * master.mimic.offset + offset)
-            master = by_name[master.mimic.joint]
-        else:
-            raise KinematicsError(f"mimic joints of robot '{desc.name}' form a cycle through [{joint.name}]")
-        rules[joint.name] = MimicRule(joint.name, master.name, multiplier, offset)
+        master, multiplier, offset = resolved[joint.name]
+        rules[joint.name] = MimicRule(joint.name, master, multiplier, offset)
     return rules
 
 
