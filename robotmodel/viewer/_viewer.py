@@ -76,6 +76,7 @@ class Viewer:
             self._positions = {s.name: s.zero for s in self.sliders}
             self._positions.update({n: v for n, v in model.default_positions().items() if n not in self._positions})
             self._extra: dict[str, float] = {}
+            self._pending = None  # positions queued for the previous robot
             self._sent: dict[str, npt.NDArray[np.float64]] = {}
             self._frames: list[str] = []
             self._frame_objects: set[str] = set()
