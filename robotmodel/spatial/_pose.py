@@ -9,6 +9,8 @@ few links is faster without NumPy's per-call overhead.
 from __future__ import annotations
 
 import math
+from math import acos as _acos
+from math import sin as _sin
 
 __all__ = ["IDENTITY_POSE", "Pose7", "Quat", "pose_compose", "pose_interpolate", "pose_inverse", "quat_canonical"]
 
@@ -65,19 +67,19 @@ def pose_interpolate(a: Pose7, b: Pose7, r: float) -> Pose7:
     (clamped), ``qa`` unchanged when θ is 0, the shortest arc (``qb`` negated when the dot
     product is negative), no renormalization afterwards.
     """
-    qx, qy, qz, qw = a[3], a[4], a[5], a[6]
-    px, py, pz, pw = b[3], b[4], b[5], b[6]
+    ax, ay, az, qx, qy, qz, qw = a
+    bx, by, bz, px, py, pz, pw = b
     u = 1.0 - r
     dot = qx * px + qy * py + qz * pz + qw * pw
-    theta = math.acos(dot if 0.0 <= dot <= 1.0 else min(1.0, abs(dot)))
+    theta = _acos(dot if 0.0 <= dot <= 1.0 else min(1.0, abs(dot)))
     if theta == 0.0:
-        return (a[0] * u + b[0] * r, a[1] * u + b[1] * r, a[2] * u + b[2] * r, qx, qy, qz, qw)
-    s = math.sin(theta)
-    wa = math.sin(u * theta) / s
-    wb = math.sin(r * theta) / s
+        return (ax * u + bx * r, ay * u + by * r, az * u + bz * r, qx, qy, qz, qw)
+    s = _sin(theta)
+    wa = _sin(u * theta) / s
+    wb = _sin(r * theta) / s
     if dot < 0.0:
         wb = -wb
-    return (a[0] * u + b[0] * r, a[1] * u + b[1] * r, a[2] * u + b[2] * r,
+    return (ax * u + bx * r, ay * u + by * r, az * u + bz * r,
             qx * wa + px * wb, qy * wa + py * wb, qz * wa + pz * wb, qw * wa + pw * wb)
 
 

@@ -122,7 +122,8 @@ class Buffer(BufferCore):
     def lookup_transform(self, target_frame: str, source_frame: str, time: Any,
                          timeout: Any = None) -> TransformStamped:
         """The pose of ``source_frame`` in ``target_frame`` at ``time`` (``Time()`` = latest)."""
-        t = time_arg_ns(time, "lookupTransform argument time")
+        # robotmodel.time.Time is immutable and always within [0, 2**63) ns.
+        t = time.nanoseconds if type(time) is Time else time_arg_ns(time, "lookupTransform argument time")
         if timeout is None:
             pose, stamp_ns = self.lookup_ns(target_frame, source_frame, t)
         else:
