@@ -12,6 +12,7 @@
 from __future__ import annotations
 
 import atexit
+import logging
 import threading
 import time
 import weakref
@@ -33,6 +34,7 @@ from robotmodel.bus._qos import QoS, Reliability
 
 __all__ = ["ZenohBackend", "open_session"]
 
+log = logging.getLogger("robotmodel.bus")
 # rmw_zenoh's SAMPLE_MISS_DETECTION_HEARTBEAT_PERIOD (500 ms).
 _HEARTBEAT_S = 0.5
 # How long opening waits for its first link before going on without it.
@@ -46,19 +48,19 @@ def open_session(connect: Sequence[str] = ()) -> zenoh.Session:
         if user is not None:
             return zenoh.open(user)
         if connect:
-            return _linked(zenoh.open(session_config([LOOPBACK_ANY_PORT], connect)))
+            return _linked(zenoh.open(session_config([LOOPBACK_ANY_PORT], connect)), connect)
         rendezvous = rendezvous_endpoint()
         try:
             # First on the machine: hold the well-known port for those who come later.
             return zenoh.open(session_config([rendezvous, LOOPBACK_ANY_PORT], []))
         except zenoh.ZError:
             # Taken (a router, or a peer that came first): meet there.
-            return _linked(zenoh.open(session_config([LOOPBACK_ANY_PORT], [rendezvous])))
+            return _linked(zenoh.open(session_config([LOOPBACK_ANY_PORT], [rendezvous])), [rendezvous])
     except zenoh.ZError as exc:
         raise BusError(f"cannot open a zenoh session: {exc}") from exc
 
 
-def _linked(session: zenoh.Session, timeout: float = _LINK_TIMEOUT_S) -> zenoh.Session:
+def _linked(session: zenoh.Session, endpoints: Sequence[str], timeout: float = _LINK_TIMEOUT_S) -> zenoh.Session:
     """Return once the session has a peer or a router (so the graph is visible), or at the timeout.
 
     Past the timeout the session keeps retrying in the background; nothing is lost.
@@ -67,8 +69,9 @@ def _linked(session: zenoh.Session, timeout: float = _LINK_TIMEOUT_S) -> zenoh.S
     while time.monotonic() < end:
         info = session.info
         if any(True for _ in info.peers_zid()) or any(True for _ in info.routers_zid()):
-            break
+            return session
         time.sleep(0.001)
+    log.warning("no zenoh peer or router answered at %s yet; still trying in the background", ", ".join(endpoints))
     return session
 
 

@@ -8,7 +8,8 @@ line per event on stdout (flushed) and exits 0 when done. Roles:
   stamp = index) reliable with congestion control BLOCK, print ``done``, wait for stdin EOF.
 - ``tf-count TOTAL``: subscribe to /tf, print ``ready``, then ``got <n> <per child>`` once
   TOTAL messages came (or the 60 s deadline passed).
-- ``tf-tick``: publish a TFMessage with an increasing stamp every 20 ms on /tf (forever).
+- ``tf-tick [CHILD [FIRST]]``: publish a TFMessage with an increasing stamp (from FIRST)
+  every 20 ms on /tf (forever).
 - ``tf-print``: subscribe to /tf and print ``tf <child> <stamp>`` for each message.
 - ``static-pub``: publish world->base and base->camera on /tf_static (latched), then wait.
 - ``static-print``: subscribe to /tf_static (transient local) and print ``static <parent> <child>``.
@@ -24,9 +25,15 @@ from collections import Counter
 from robotmodel.bus import QOS_TF, QOS_TF_STATIC, QOS_TF_STATIC_LISTENER, Node
 from robotmodel.msgs import TFMessage, make_transform
 
+_SAY = threading.Lock()
+
 
 def say(*words: object) -> None:
-    print(*words, flush=True)
+    # One write per line under a lock: callbacks print from the bus's threads too.
+    line = " ".join(str(w) for w in words) + "\n"
+    with _SAY:
+        sys.stdout.write(line)
+        sys.stdout.flush()
 
 
 def wait_forever() -> None:
@@ -71,7 +78,7 @@ def main(argv: list[str]) -> int:
         elif role == "tf-tick":
             pub = node.create_publisher(TFMessage, "/tf", QOS_TF)
             say("ready")
-            i = 0
+            i = int(argv[2]) if len(argv) > 2 else 0
             while True:
                 pub.publish(TFMessage([make_transform("world", argv[1] if len(argv) > 1 else "tick", stamp_ns=i)]))
                 i += 1
