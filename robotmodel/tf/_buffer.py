@@ -3,7 +3,9 @@
 Unlike tf2_ros's Python buffer, which polls every 20 ms and never raises
 TimeoutException, a lookup with a timeout here sleeps until an insert touches a frame
 the lookup depends on, and raises :class:`TimeoutException` (with the last reason) when
-the timeout expires. Every failure of this API is a tf2 exception (TransformException),
+the timeout expires. ``wait_for_transform_async`` returns a future resolved by the insert
+that makes the transform available, with its callbacks run outside the buffer's lock (tf2's
+transformable requests). Every failure of this API is a tf2 exception (TransformException),
 invalid times and frame ids included, and ``can_transform`` always answers a bool.
 """
 
@@ -12,6 +14,7 @@ from __future__ import annotations
 import threading
 import time
 from collections.abc import Callable
+from concurrent.futures import Future
 from typing import Any, TypeVar
 
 import numpy as np
@@ -118,6 +121,77 @@ class Buffer(BufferCore):
                 waiting.remove(cond)
                 if not waiting:
                     del self._waiters[name]
+
+    def wait_for_transform_async(self, target_frame: str, source_frame: str,
+                                 time: Any) -> Future[TransformStamped]:
+        """A future of the transform at ``time``, resolved as soon as an insert makes it available.
+
+        As tf2_ros (Jazzy): the result is the TransformStamped, there is no timeout (cancel the
+        future to stop waiting). Done-callbacks run in the inserting thread, never under the
+        buffer's lock.
+        """
+        t = time_arg_ns(time, "waitForTransform argument time")
+        return self._request(lambda: _message(*self.lookup_ns(target_frame, source_frame, t), target_frame,
+                                              source_frame), [(target_frame, t), (source_frame, t)])
+
+    def wait_for_transform_full_async(self, target_frame: str, target_time: Any, source_frame: str,
+                                      source_time: Any, fixed_frame: str) -> Future[TransformStamped]:
+        """:meth:`wait_for_transform_async` for the advanced (fixed-frame) form."""
+        tt = time_arg_ns(target_time, "waitForTransform argument target_time")
+        st = time_arg_ns(source_time, "waitForTransform argument source_time")
+        return self._request(
+            lambda: _message(*self.lookup_full_ns(target_frame, tt, source_frame, st, fixed_frame), target_frame,
+                             source_frame),
+            [(target_frame, tt), (fixed_frame, tt), (fixed_frame, st), (source_frame, st)])
+
+    def _request(self, attempt: Callable[[], TransformStamped],
+                 ends: list[tuple[str, int]]) -> Future[TransformStamped]:
+        """tf2's transformable request: retried by inserts into the frames the lookup depends on."""
+        future: Future[TransformStamped] = Future()
+        registered: set[str] = set()
+        one_at_a_time = threading.Lock()
+
+        def unregister() -> None:
+            for name in registered:
+                waiting = self._waiters[name]
+                waiting.remove(retry)
+                if not waiting:
+                    del self._waiters[name]
+            registered.clear()
+
+        def retry() -> None:
+            with one_at_a_time:
+                if future.done():
+                    return
+                with self._lock:
+                    if future.done():  # cancelled meanwhile
+                        return
+                    unregister()
+                    try:
+                        result = attempt()
+                    except InvalidArgumentException as exc:
+                        failure: TransformException | None = exc
+                    except TransformException:
+                        registered.update(self._dependencies(ends))
+                        for name in registered:
+                            self._waiters.setdefault(name, []).append(retry)
+                        return
+                    else:
+                        failure = None
+                # Outside the buffer's lock: the future's done-callbacks run here.
+                if failure is not None:
+                    future.set_exception(failure)
+                else:
+                    future.set_result(result)
+
+        def forget(done: Future[TransformStamped]) -> None:
+            if done.cancelled():
+                with self._lock:
+                    unregister()
+
+        future.add_done_callback(forget)
+        retry()
+        return future
 
     def lookup_transform(self, target_frame: str, source_frame: str, time: Any,
                          timeout: Any = None) -> TransformStamped:

@@ -11,7 +11,7 @@ frames. Nothing outside the buffer (log handlers included) runs under the lock.
 from __future__ import annotations
 
 import threading
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 
 import numpy as np
 import numpy.typing as npt
@@ -69,7 +69,9 @@ class BufferCore(FrameGraph):
         self._authority: dict[int, str] = {}
         self._lock = threading.RLock()
         # Waiting lookups by the frame names they depend on (tf2's transformable requests).
-        self._waiters: dict[str, list[threading.Condition]] = {}
+        # A waiter is a sleeping thread's Condition or an asynchronous request's retry callable,
+        # which runs after the inserting thread has released the lock.
+        self._waiters: dict[str, list[threading.Condition | Callable[[], None]]] = {}
 
     # ----------------------------------------------------------------- insert
     def set_transform(self, transform: TransformStamped, authority: str, is_static: bool = False) -> bool:
@@ -134,12 +136,16 @@ class BufferCore(FrameGraph):
                 cache = self._caches[child_id] = TimeCache(self.cache_time_ns)
             parent_id = self._ids.get(parent) or self._intern(parent)
             accepted = cache.insert(stamp_ns, values, parent_id)
+            retry = None
             if accepted:
                 self._authority[child_id] = authority
                 if self._waiters:
-                    self._wake(child)
+                    retry = self._wake(child)
         if not accepted:
             _log_old_data(child, stamp_ns, authority)
+        elif retry:
+            for request in retry:
+                request()
         return accepted
 
     def insert_many(self, parent: str, child: str, stamps: npt.ArrayLike, poses: npt.ArrayLike,
@@ -184,12 +190,15 @@ class BufferCore(FrameGraph):
             parent_id = self._ids.get(parent) or self._intern(parent)
             rejected = cache.insert_many(stamp_arr, values, parent_id)
             accepted = int(stamp_arr.shape[0]) - len(rejected)
+            retry = None
             if accepted:
                 self._authority[child_id] = authority
                 if self._waiters:
-                    self._wake(child)
+                    retry = self._wake(child)
         for k in rejected:
             _log_old_data(child, int(stamp_arr[k]), authority)
+        for request in retry or ():
+            request()
         return accepted
 
     def _intern(self, name: str) -> int:
@@ -200,9 +209,15 @@ class BufferCore(FrameGraph):
             self._caches.append(None)
         return found
 
-    def _wake(self, frame: str) -> None:
-        for cond in self._waiters.get(frame, ()):
-            cond.notify()
+    def _wake(self, frame: str) -> list[Callable[[], None]]:
+        """Notify the threads waiting on ``frame``; return the requests to retry once unlocked."""
+        retry = []
+        for waiter in self._waiters.get(frame, ()):
+            if isinstance(waiter, threading.Condition):
+                waiter.notify()
+            else:
+                retry.append(waiter)
+        return retry
 
     # ----------------------------------------------------------------- lookup
     def _validate(self, name: str, arg: str) -> int:

@@ -235,3 +235,41 @@ def test_no_log_handler_runs_under_the_buffer_lock() -> None:
     finally:
         logger.removeHandler(probe)
     assert outcomes == [True, True, True]
+
+
+def test_wait_for_transform_async_resolves_on_the_insert_outside_the_lock() -> None:
+    buf = Buffer()
+    ready = buf.wait_for_transform_async("a", "a", Time())
+    assert ready.done() and ready.result().child_frame_id == "a"  # identical frames: at once
+    future = buf.wait_for_transform_async("map", "base", Time(seconds=2))
+    assert not future.done()
+    lock_free: list[bool] = []
+
+    def on_done(done) -> None:
+        other = threading.Thread(target=lambda: buf.can_transform("map", "base", Time()))
+        other.start()
+        other.join(5)
+        lock_free.append(not other.is_alive())
+
+    future.add_done_callback(on_done)
+    buf.insert("map", "odom", 2 * SEC, POOL[0], "me")
+    assert not future.done()  # odom -> base still missing
+    buf.insert("odom", "base", 2 * SEC, POOL[1], "me")
+    assert future.done()
+    got = future.result()
+    assert (got.header.frame_id, got.child_frame_id, got.header.stamp.sec) == ("map", "base", 2)
+    assert got.transform.translation.x == 3.0
+    assert lock_free == [True]
+    assert buf._waiters == {}
+
+
+def test_cancelled_request_is_forgotten() -> None:
+    buf = Buffer()
+    future = buf.wait_for_transform_full_async("map", Time(seconds=1), "base", Time(seconds=1), "odom")
+    assert set(buf._waiters) == {"map", "odom", "base"}
+    assert future.cancel()
+    assert buf._waiters == {}
+    buf.insert("map", "odom", SEC, POOL[0], "me")  # nothing left to retry
+    bad = buf.wait_for_transform_async("", "base", Time())  # waiting cannot fix an argument
+    assert isinstance(bad.exception(timeout=0), InvalidArgumentException)
+    assert buf._waiters == {}
