@@ -99,14 +99,16 @@ def _vec3(text: str, what: str) -> Vec3:
     return (x, y, z)
 
 
-def _quat_to_rpy(x: float, y: float, z: float, w: float) -> Vec3:
-    norm = math.sqrt(x * x + y * y + z * z + w * w)
-    if norm == 0.0:
-        raise URDFParseError("quat_xyzw has zero norm")
-    x, y, z, w = x / norm, y / norm, z / norm, w / norm
-    roll = math.atan2(2 * (w * x + y * z), 1 - 2 * (x * x + y * y))
-    pitch = math.asin(max(-1.0, min(1.0, 2 * (w * y - z * x))))
-    yaw = math.atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z))
+def _quat_to_rpy(x: float, y: float, z: float, w: float, what: str) -> Vec3:
+    scale = max(abs(x), abs(y), abs(z), abs(w))
+    if scale == 0.0:
+        raise URDFParseError(f"origin of {what}: quat_xyzw has zero norm")
+    # spatial's kernels (imported here: only version 1.1+ files with quat_xyzw need NumPy);
+    # scaled first so that a tiny quaternion's norm does not underflow.
+    from robotmodel.spatial import matrix_to_rpy, quat_to_matrix
+
+    q = (x / scale, y / scale, z / scale, w / scale)
+    roll, pitch, yaw = (float(v) for v in matrix_to_rpy(quat_to_matrix(q)))
     return (roll, pitch, yaw)
 
 
@@ -119,7 +121,7 @@ def _pose(elem: ET.Element | None, what: str, version: tuple[int, int]) -> Pose:
         if elem.get("rpy") is not None:
             raise URDFParseError(f"origin of {what} has both rpy and quat_xyzw")
         qx, qy, qz, qw = _vec(quat, 4, f"malformed origin quat_xyzw of {what}")
-        return Pose(xyz, _quat_to_rpy(qx, qy, qz, qw))
+        return Pose(xyz, _quat_to_rpy(qx, qy, qz, qw, what))
     return Pose(xyz, _vec3(elem.get("rpy", "0 0 0"), f"malformed origin rpy of {what}"))
 
 
