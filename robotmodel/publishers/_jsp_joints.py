@@ -51,7 +51,7 @@ class JointLayout:
 
     ``names`` is the message's joint order (document order, mimic joints included);
     ``unresolved`` lists mimic joints whose chain does not end at a free joint, which
-    are left out of ``names``.
+    are left out of ``names``; ``every_joint`` names all joints, fixed ones included.
     """
 
     robot: str
@@ -59,6 +59,7 @@ class JointLayout:
     free: Mapping[str, FreeJoint]
     dependent: Mapping[str, DependentJoint]
     unresolved: tuple[str, ...] = ()
+    every_joint: frozenset[str] = frozenset()
 
 
 def _float(name: str, jtype: str, which: str, text: str) -> float:
@@ -167,4 +168,5 @@ def read_layout(
         free[name] = FreeJoint(name, lower, upper, _default(name, lower, upper, zeros), jtype == "continuous")
     dependent, unresolved = _resolve(direct, free)
     published = tuple(n for n in names if n not in unresolved)
-    return JointLayout(robot.get("name", ""), published, free, dependent, tuple(unresolved))
+    every = frozenset(j.get("name", "") for j in robot.findall("joint"))
+    return JointLayout(robot.get("name", ""), published, free, dependent, tuple(unresolved), every)

@@ -77,9 +77,11 @@ class JointStateLogic:
             self.log.warning("mimic joint '%s' of robot '%s' does not lead to a movable, non-mimic joint; "
                              "it is not published", name, layout.robot)
         for name in self.zeros:
-            if name not in layout.free:
-                self.log.warning("zeros names '%s', which is not a movable, non-mimic joint of robot '%s'; "
-                                 "ignored", name, layout.robot)
+            # A value for a mimic or fixed joint is ignored silently, as joint_state_publisher does;
+            # a name the robot lacks is likely a typo worth a word.
+            if name not in layout.every_joint:
+                self.log.warning("zeros names joint '%s', which robot '%s' does not have; ignored",
+                                 name, layout.robot)
         self.layout = layout
         free = layout.free
         self._position = {n: j.zero for n, j in free.items()} if self.publish_default_positions else {}

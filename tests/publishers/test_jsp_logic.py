@@ -217,3 +217,12 @@ def test_talos_publishes_all_44_joints_with_mimics():
         if joint.mimic is not None and joint.type.value != "fixed":
             master = values[joint.mimic.joint]
             assert values[joint.name] == pytest.approx(joint.mimic.multiplier * master + joint.mimic.offset)
+
+
+def test_zeros_for_unknown_joints_are_said_mimic_ones_silently_ignored(caplog):
+    jsp = JointStateLogic(zeros={"m1": 3.0, "fixed_j": 1.0, "typo": 2.0})
+    with caplog.at_level(logging.WARNING, "joint_state_publisher"):
+        jsp.configure(ROBOT)
+    assert [r.getMessage() for r in caplog.records] == [
+        "zeros names joint 'typo', which robot 'r' does not have; ignored"]
+    assert jsp.message(T0).position[7] == pytest.approx(0.1)  # m1 still follows its master
