@@ -35,6 +35,8 @@ COMMAND_MODULES: tuple[str, ...] = (
     "robotmodel.cli.static_tf_cmd",
     "robotmodel.cli.tf2_echo_cmd",
     "robotmodel.cli.view_frames_cmd",
+    "robotmodel.cli.tf_export_cmd",
+    "robotmodel.cli.record_cmd",
     "robotmodel.cli.rsp_cmd",
     "robotmodel.cli.jsp_cmd",
     "robotmodel.cli.jsp_gui_cmd",

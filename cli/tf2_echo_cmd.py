@@ -1,5 +1,8 @@
 """``robotmodel tf2-echo SOURCE TARGET [RATE]`` (alias ``tf2_echo``): print a transform as it arrives.
 
+With ``--bag FILE [--time T | --every DT]`` it answers from a recording instead of the
+bus, in the same format (see :mod:`robotmodel.cli._bag_echo`).
+
 Prints TARGET's pose in SOURCE (``lookupTransform(SOURCE, TARGET, latest)``) every
 1/RATE seconds (default 1 Hz) in tf2_echo's format; until the frames are connected it logs
 tf2_echo's throttled ``Waiting for transform ...`` line. Ctrl-C or SIGTERM end it (exit 0).
@@ -12,6 +15,7 @@ import sys
 import time
 from typing import Any
 
+from robotmodel.cli._bag_args import BagWordsError, split_bag_words
 from robotmodel.cli._bus_args import split_connect, stop_on_signals, strip_ros_args
 from robotmodel.cli._echo_fmt import (
     USAGE,
@@ -31,9 +35,10 @@ _NODE = "tf2_echo"
 def register(sub: Any) -> None:
     """Add the ``tf2-echo`` subcommand (it parses its own words, as ROS's does)."""
     parser: argparse.ArgumentParser = sub.add_parser(
-        "tf2-echo", aliases=["tf2_echo"], prefix_chars="+", add_help=False,
+        "tf2-echo", aliases=["tf2_echo"], prefix_chars="\x01", add_help=False,
         help="print a transform from the bus in tf2_echo's format",
-        description="tf2-echo SOURCE TARGET [RATE] [--connect ENDPOINT]",
+        description="tf2-echo SOURCE TARGET [RATE] [--connect ENDPOINT] | "
+                    "tf2-echo --bag FILE SOURCE TARGET [--time T | --every DT] [--urdf FILE]",
     )
     parser.add_argument("words", nargs="*")
     parser.set_defaults(func=run)
@@ -65,11 +70,23 @@ def run(args: argparse.Namespace) -> int:
         print(USAGE, end="", flush=True)
         return 0
     try:
+        words, bag_options = split_bag_words(words)
+    except BagWordsError as exc:
+        print(f"robotmodel tf2-echo: error: {exc}", file=sys.stderr)
+        return 2
+    if bag_options and "bag" not in bag_options:
+        print("robotmodel tf2-echo: error: --time, --every and --urdf need --bag FILE", file=sys.stderr)
+        return 2
+    try:
         echo = parse_echo_args(words)
     except EchoArgsError as exc:
         print(str(exc), end="" if exc.to_stdout else "\n", file=sys.stdout if exc.to_stdout else sys.stderr,
               flush=True)
         return int(exc.code)
+    if bag_options:
+        from robotmodel.cli._bag_echo import run_bag_echo
+
+        return int(run_bag_echo(echo, bag_options))
 
     stop = stop_on_signals()
     from robotmodel.bus import Node

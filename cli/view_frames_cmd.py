@@ -4,6 +4,9 @@ As ROS 2 Jazzy's tf2_tools view_frames: listens for ``--wait-time`` seconds (def
 logs the frames YAML in its ``Result:`` line, and writes ``frames_<YYYY-MM-DD_HH.MM.SS>.gv``
 (local time) or ``NAME.gv`` with ``-o NAME``, then the PDF with graphviz's ``dot`` when it
 is installed. It also writes the frames YAML next to them as ``NAME.yaml``.
+
+With ``--bag FILE`` it draws the tree of a recording instead (no listening): every frame
+with its newest parent, rates and spans over the whole recording.
 """
 
 from __future__ import annotations
@@ -14,6 +17,7 @@ import time
 from pathlib import Path
 from typing import Any
 
+from robotmodel.cli._bag_args import add_bag_arguments
 from robotmodel.cli._bus_args import stop_on_signals
 from robotmodel.cli._common import write_atomic
 from robotmodel.cli._rosfmt import ros_log
@@ -35,6 +39,7 @@ def register(sub: Any) -> None:
     parser.add_argument("-o", "--output", metavar="NAME", help="output base name (default frames_<date>)")
     parser.add_argument("--connect", action="append", default=[], metavar="ENDPOINT",
                         help="zenoh endpoint to connect to (repeatable)")
+    add_bag_arguments(parser)
     parser.set_defaults(func=run)
 
 
@@ -53,21 +58,30 @@ def run(args: argparse.Namespace) -> int:
     if not args.wait_time >= 0.0:
         print("robotmodel view-frames: error: --wait-time must be >= 0", file=sys.stderr)
         return 2
-    stop = stop_on_signals()
-    from robotmodel.bus import Node
     from robotmodel.tf import Buffer, write_view_frames
-    from robotmodel.tf_ros import TransformListener
 
-    buffer = Buffer()
-    with Node(_NODE, connect=args.connect) as node, TransformListener(buffer, node):
-        ros_log("INFO", _NODE, f"Listening to tf data for {args.wait_time} seconds...")
-        stop.wait(args.wait_time)
+    if args.bag is not None:
+        from robotmodel.cli._bag_args import load_bag
+
+        loaded = load_bag(args)
+        buffer: Buffer = loaded.buffer
+        now_ns = loaded.end_ns or time.time_ns()
+    else:
+        stop = stop_on_signals()
+        from robotmodel.bus import Node
+        from robotmodel.tf_ros import TransformListener
+
+        buffer = Buffer()
+        with Node(_NODE, connect=args.connect) as node, TransformListener(buffer, node):
+            ros_log("INFO", _NODE, f"Listening to tf data for {args.wait_time} seconds...")
+            stop.wait(args.wait_time)
+        now_ns = time.time_ns()
     ros_log("INFO", _NODE, "Generating graph...")
     frames_yaml = buffer.all_frames_as_yaml()
     ros_log("INFO", _NODE, result_message(frames_yaml))
     name = args.output if args.output is not None else default_output_name()
     ros_log("INFO", _NODE, f"Exporting graph in {name}.pdf file...")
-    _gv, pdf = write_view_frames(buffer, name, time.time_ns())
+    _gv, pdf = write_view_frames(buffer, name, now_ns)
     write_atomic(Path(f"{name}.yaml"), frames_yaml if frames_yaml.endswith("\n") or not frames_yaml
                  else frames_yaml + "\n")
     if pdf is None:

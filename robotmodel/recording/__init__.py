@@ -14,16 +14,28 @@ here, not the other way round.
 
 from __future__ import annotations
 
+from robotmodel.recording._export import COLUMNS, PoseSeries, pose_series, write_poses
 from robotmodel.recording._load import DEFAULT_TOPICS, Loaded, load_buffer, load_recording
-from robotmodel.recording._open import Format, Recording, Topic, detect_format
+from robotmodel.recording._mcap import McapWriter, qos_yaml
+from robotmodel.recording._open import Format, Recording, Topic, detect_format, ros1_typestore
+from robotmodel.recording._record import KNOWN_TOPICS, Recorder
 
 __all__ = [
+    "COLUMNS",
     "DEFAULT_TOPICS",
+    "KNOWN_TOPICS",
     "Format",
     "Loaded",
+    "McapWriter",
+    "PoseSeries",
+    "Recorder",
     "Recording",
     "Topic",
     "detect_format",
     "load_buffer",
     "load_recording",
+    "pose_series",
+    "qos_yaml",
+    "ros1_typestore",
+    "write_poses",
 ]

@@ -1,0 +1,75 @@
+"""``tf2-echo --bag FILE SOURCE TARGET [--time T | --every DT]``: tf2_echo's output over a recording.
+
+``--time T`` prints the transform at T (seconds; absolute, or relative to the first
+recorded transform with a leading ``+``); ``--every DT`` prints it every DT seconds of
+recording time from the first to the last recorded transform (default: 1/RATE, tf2_echo's
+rate argument, so once per recorded second). A lookup that fails prints tf2_echo's
+failure block at that time; with ``--time`` the exit code is then 1.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from robotmodel.cli._bag_args import BagWordsError, load_bag, parse_seconds_ns
+from robotmodel.cli._echo_fmt import EchoArgs, failure_text, format_echo
+
+__all__ = ["run_bag_echo"]
+
+_NS = 1_000_000_000
+
+
+def _times(start: int, end: int, options: dict[str, str | bool], rate_hz: float) -> tuple[list[int], bool]:
+    if "time" in options and "every" in options:
+        raise BagWordsError("give --time or --every, not both")
+    text = options.get("time")
+    if isinstance(text, str):
+        if text.startswith("+"):
+            return [start + parse_seconds_ns(text[1:], "--time")], True
+        t = parse_seconds_ns(text, "--time")
+        if t < 0:
+            raise BagWordsError("--time cannot be negative")
+        return [t], True
+    every = options.get("every")
+    step = parse_seconds_ns(every, "--every") if isinstance(every, str) else round(_NS / rate_hz)
+    if step <= 0:
+        raise BagWordsError("--every must be greater than 0")
+    if end == 0:  # static transforms only: one answer, valid at any time
+        return [0], False
+    return list(range(start, end + 1, step)), False
+
+
+def run_bag_echo(echo: EchoArgs, options: dict[str, str | bool]) -> int:
+    """Load the recording, then print the transform at each requested time."""
+    from robotmodel.errors import TransformException
+
+    args = argparse.Namespace(bag=options["bag"], urdf=options.get("urdf"),
+                              no_progress=bool(options.get("no_progress")))
+    try:
+        _times(0, 0, options, echo.rate_hz)  # check the words before a long load
+        loaded = load_bag(args)
+        times, single = _times(loaded.start_ns, loaded.end_ns, options, echo.rate_hz)
+    except BagWordsError as exc:
+        print(f"robotmodel tf2-echo: error: {exc}", file=sys.stderr)
+        return 2
+    buffer = loaded.buffer
+    printed = False
+    failed = False
+    out = []
+    for t in times:
+        try:
+            pose, stamp = buffer.lookup_ns(echo.source_frame, echo.target_frame, t)
+        except TransformException as exc:
+            out.append(failure_text(t / 1e9, str(exc), buffer.all_frames_as_string(), printed))
+            failed = True
+        else:
+            sec, nanosec = divmod(stamp, _NS)
+            out.append(format_echo(sec, nanosec, pose[:3], pose[3:]))
+            printed = True
+        if len(out) >= 256:
+            sys.stdout.write("".join(out))
+            out.clear()
+    sys.stdout.write("".join(out))
+    sys.stdout.flush()
+    return 1 if single and failed else 0

@@ -1,0 +1,98 @@
+"""Recording topics from the bus into MCAP, as ``ros2 bag record`` does (raw CDR, receive-time log stamps).
+
+The usual topics have known types and are subscribed at once, latched ones
+(/tf_static, /robot_description) with transient-local QoS so that data published before
+the recorder started is recorded too. Any other topic is subscribed as soon as the bus's
+graph names its type. Messages are written undecoded; the log time is the receive time
+and the publish time the sender's attachment stamp, as rosbag2 records them.
+"""
+
+from __future__ import annotations
+
+import logging
+import threading
+import time
+from collections.abc import Callable, Sequence
+from typing import TYPE_CHECKING, Any
+
+from robotmodel.errors import RobotModelError
+from robotmodel.recording._mcap import McapWriter, qos_yaml
+
+if TYPE_CHECKING:
+    from robotmodel.bus import Node, RawMessage
+
+__all__ = ["KNOWN_TOPICS", "Recorder"]
+
+# topic: (type, depth, transient local)
+KNOWN_TOPICS: dict[str, tuple[str, int, bool]] = {
+    "/tf": ("tf2_msgs/msg/TFMessage", 100, False),
+    "/tf_static": ("tf2_msgs/msg/TFMessage", 100, True),
+    "/joint_states": ("sensor_msgs/msg/JointState", 100, False),
+    "/robot_description": ("std_msgs/msg/String", 1, True),
+}
+_DISCOVERY_PERIOD_S = 0.25
+_log = logging.getLogger("robotmodel.recording")
+
+
+class Recorder:
+    """Subscribes ``node`` to ``topics`` and writes what arrives to ``writer`` until :meth:`close`.
+
+    ``on_subscribed(topic, msgtype)`` is called as each topic is subscribed (for logging).
+    """
+
+    def __init__(self, node: Node, writer: McapWriter, topics: Sequence[str],
+                 on_subscribed: Callable[[str, str], None] | None = None) -> None:
+        self.node = node
+        self.writer = writer
+        self._on_subscribed = on_subscribed
+        self._pending = [node.resolve_topic_name(t) for t in dict.fromkeys(topics)]
+        self._subscribed: dict[str, str] = {}
+        self._stop = threading.Event()
+        for topic in list(self._pending):
+            known = KNOWN_TOPICS.get(topic)
+            if known is not None:
+                self._subscribe(topic, *known)
+        self._thread: threading.Thread | None = None
+        if self._pending:
+            self._thread = threading.Thread(target=self._discover, name="record-discovery", daemon=True)
+            self._thread.start()
+
+    @property
+    def subscribed(self) -> dict[str, str]:
+        """Topics subscribed so far and their types."""
+        return dict(self._subscribed)
+
+    def _subscribe(self, topic: str, msgtype: str, depth: int, latched: bool) -> None:
+        from robotmodel.bus import Durability, QoS
+
+        self.writer.add_topic(topic, msgtype, qos_yaml(depth, True, latched))
+        qos = QoS(depth, durability=Durability.TRANSIENT_LOCAL if latched else Durability.VOLATILE)
+        self.node.create_subscription(msgtype, topic, self._on_message, qos, raw=True)
+        self._subscribed[topic] = msgtype
+        self._pending.remove(topic)
+        if self._on_subscribed is not None:
+            self._on_subscribed(topic, msgtype)
+
+    def _on_message(self, msg: RawMessage) -> None:
+        if self._stop.is_set():
+            return
+        self.writer.write(msg.topic, time.time_ns(), msg.payload, msg.attachment.source_timestamp_ns)
+
+    def _discover(self) -> None:
+        while self._pending and not self._stop.wait(_DISCOVERY_PERIOD_S):
+            types = dict(self.node.get_topic_names_and_types())
+            for topic in list(self._pending):
+                found: list[Any] = types.get(topic, [])
+                if not found:
+                    continue
+                try:
+                    self._subscribe(topic, str(found[0]), 100, False)
+                except RobotModelError as exc:  # a type rosbags does not know: say so, record the rest
+                    _log.warning("not recording %s: %s", topic, exc)
+                    self._pending.remove(topic)
+
+    def close(self) -> None:
+        """Stop recording (the writer stays open for its owner to close)."""
+        self._stop.set()
+        if self._thread is not None:
+            self._thread.join(2.0)
