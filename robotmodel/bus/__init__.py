@@ -29,7 +29,6 @@ from __future__ import annotations
 from robotmodel.bus._attachment import ATTACHMENT_SIZE, Attachment
 from robotmodel.bus._backend import Backend, RawSample
 from robotmodel.bus._codec import Codec, RosbagsCodec, TFRecords, codec_for, register_codec, typestore
-from robotmodel.bus._errors import BusError
 from robotmodel.bus._graph import Graph
 from robotmodel.bus._names import (
     Entity,
@@ -55,6 +54,7 @@ from robotmodel.bus._qos import (
     qos_from_keyexpr,
     qos_to_keyexpr,
 )
+from robotmodel.errors import BusError
 
 __all__ = [
     "ATTACHMENT_SIZE",

@@ -10,7 +10,7 @@ from __future__ import annotations
 import struct
 from typing import NamedTuple
 
-from robotmodel.bus._errors import BusError
+from robotmodel.errors import BusError
 
 __all__ = ["ATTACHMENT_SIZE", "Attachment", "AttachmentWriter", "is_attachment"]
 

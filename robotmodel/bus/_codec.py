@@ -13,7 +13,7 @@ from collections.abc import Callable
 from functools import cache
 from typing import Any
 
-from robotmodel.bus._errors import BusError
+from robotmodel.errors import BusError
 
 __all__ = [
     "KNOWN_TYPE_HASHES",

@@ -10,7 +10,8 @@ every 100 ms, backing off to 1 s) to whoever binds the port next.
 
 Environment, as rmw_zenoh: ``ZENOH_SESSION_CONFIG_URI`` / ``ZENOH_ROUTER_CONFIG_URI`` name
 a zenoh JSON5 config file used instead of these defaults, and ``ZENOH_CONFIG_OVERRIDE``
-(``key=json5;key=json5``) patches the config in use.
+(``key=json5;key=json5``) patches the config in use. Timestamping is always switched on
+(latched topics need it), and a file that names no listen endpoints listens on loopback.
 """
 
 from __future__ import annotations
@@ -20,7 +21,7 @@ import os
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
-from robotmodel.bus._errors import BusError
+from robotmodel.errors import BusError
 
 if TYPE_CHECKING:
     import zenoh
@@ -92,6 +93,13 @@ def apply_override(config: zenoh.Config) -> zenoh.Config:
     return config
 
 
+def _loopback_unless_set(config: zenoh.Config, endpoint: str) -> None:
+    # A file that names no listen endpoints would get zenoh's default, every interface;
+    # like rmw_zenoh's own files, stay on loopback unless the file asks otherwise.
+    if isinstance(json.loads(config.get_json("listen/endpoints")), dict):
+        _insert(config, "listen/endpoints", json.dumps([endpoint]))
+
+
 def _from_file(env: str) -> zenoh.Config | None:
     import zenoh
 
@@ -111,6 +119,7 @@ def user_session_config(connect: Sequence[str] = ()) -> zenoh.Config | None:
     if config is None:
         return None
     _insert(config, "timestamping/enabled", "true")
+    _loopback_unless_set(config, LOOPBACK_ANY_PORT)
     if connect:
         _insert(config, "connect/endpoints", json.dumps(_check_endpoints(connect)))
     return apply_override(config)
@@ -143,6 +152,7 @@ def router_config(listen: Sequence[str] = (), connect: Sequence[str] = ()) -> ze
         _insert(config, "routing/router/peers_failover_brokering", "true")
     else:
         _insert(config, "timestamping/enabled", "true")
+        _loopback_unless_set(config, rendezvous_endpoint())
         if listen:
             _insert(config, "listen/endpoints", json.dumps(_check_endpoints(listen)))
     if connect:

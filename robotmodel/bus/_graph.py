@@ -6,8 +6,8 @@ import threading
 from collections.abc import Callable
 
 from robotmodel.bus._backend import Backend, Handle
-from robotmodel.bus._errors import BusError
 from robotmodel.bus._names import ADMIN_SPACE, Entity, EntityKind
+from robotmodel.errors import BusError
 
 __all__ = ["Graph"]
 

@@ -18,8 +18,8 @@ from enum import StrEnum
 
 import xxhash
 
-from robotmodel.bus._errors import BusError
 from robotmodel.bus._qos import QoS, qos_from_keyexpr, qos_to_keyexpr
+from robotmodel.errors import BusError
 
 __all__ = [
     "ADMIN_SPACE",

@@ -13,7 +13,6 @@ from typing import Any, Generic, NamedTuple, TypeVar
 from robotmodel.bus._attachment import Attachment, AttachmentWriter, is_attachment
 from robotmodel.bus._backend import Backend, Handle, RawPublisher, RawSample
 from robotmodel.bus._codec import Codec, codec_for
-from robotmodel.bus._errors import BusError
 from robotmodel.bus._graph import Graph
 from robotmodel.bus._names import (
     Entity,
@@ -25,6 +24,7 @@ from robotmodel.bus._names import (
     validate_node_name,
 )
 from robotmodel.bus._qos import QOS_DEFAULT, QoS
+from robotmodel.errors import BusError
 
 __all__ = ["Context", "Node", "Publisher", "RawMessage", "Subscription", "default_domain_id"]
 

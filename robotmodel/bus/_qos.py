@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 from enum import IntEnum
 
-from robotmodel.bus._errors import BusError
+from robotmodel.errors import BusError
 
 __all__ = [
     "DEFAULT_DEPTH",

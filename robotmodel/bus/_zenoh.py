@@ -29,8 +29,8 @@ from robotmodel.bus._config import (
     session_config,
     user_session_config,
 )
-from robotmodel.bus._errors import BusError
 from robotmodel.bus._qos import QoS, Reliability
+from robotmodel.errors import BusError
 
 __all__ = ["ZenohBackend", "open_session"]
 

@@ -109,3 +109,23 @@ def test_config_override(bus_env: dict[str, str], monkeypatch: pytest.MonkeyPatc
     monkeypatch.setenv("ZENOH_CONFIG_OVERRIDE", "no equals sign")
     with pytest.raises(BusError, match="ZENOH_CONFIG_OVERRIDE"):
         Node("bad")
+
+
+def test_a_config_file_without_listen_endpoints_stays_on_loopback(tmp_path: Path,
+                                                                  monkeypatch: pytest.MonkeyPatch) -> None:
+    from robotmodel.bus._config import router_config, user_session_config
+
+    config = tmp_path / "bare.json5"
+    config.write_text("{ mode: 'peer' }")
+    monkeypatch.setenv("ZENOH_SESSION_CONFIG_URI", str(config))
+    session = user_session_config()
+    assert session is not None
+    assert json.loads(session.get_json("listen/endpoints")) == ["tcp/127.0.0.1:0"]
+    assert json.loads(session.get_json("timestamping/enabled")) is True
+    monkeypatch.setenv("ZENOH_ROUTER_CONFIG_URI", str(config))
+    monkeypatch.setenv("ROBOTMODEL_ZENOH_PORT", "17999")
+    assert json.loads(router_config().get_json("listen/endpoints")) == ["tcp/127.0.0.1:17999"]
+    config.write_text("{ mode: 'peer', listen: { endpoints: ['tcp/127.0.0.1:17998'] } }")
+    session = user_session_config()
+    assert session is not None
+    assert json.loads(session.get_json("listen/endpoints")) == ["tcp/127.0.0.1:17998"]
