@@ -49,7 +49,7 @@ class Backend(ABC):
     @property
     @abstractmethod
     def zid(self) -> str:
-        """The session id, 32 lowercase hex digits as rmw_zenoh writes it in tokens."""
+        """The session id as rmw_zenoh writes it in tokens: zenoh's text, lowercase hex without leading zeros."""
 
     @abstractmethod
     def declare_publisher(self, key: str, qos: QoS) -> RawPublisher:

@@ -28,6 +28,7 @@ Derivation (rmw_zenoh docs/design.md, "Topic and Service name mapping", "Graph C
 from __future__ import annotations
 
 import json
+import re
 import struct
 import threading
 import time
@@ -89,6 +90,7 @@ def test_a_live_tf_publisher_puts_rmw_zenohs_bytes(bus_env: dict[str, str]) -> N
         arrived.set()
 
     with Node("tf_pub") as node:
+        session_zid = str(node.context.backend.session.zid())  # type: ignore[attr-defined]
         spy = zenoh.open(config)  # a plain zenoh session, as any rmw_zenoh peer would be
         try:
             spy.declare_subscriber(f"{domain}/**", on_sample)
@@ -109,7 +111,9 @@ def test_a_live_tf_publisher_puts_rmw_zenohs_bytes(bus_env: dict[str, str]) -> N
             spy.close()
 
     zid = node.context.backend.zid
-    assert len(zid) == 32 and int(zid, 16) >= 0
+    # zenoh's own text of the id (rmw_zenoh writes zid.to_string()): lowercase hex of the
+    # little-endian 128-bit id, without leading zeros, so 32 digits or (1 in 16) fewer.
+    assert re.fullmatch(r"[0-9a-f]{1,32}", zid) and zid == session_zid
     node_token = f"@ros2_lv/{domain}/{zid}/0/0/NN/%/%/tf_pub"
     pub_token = (f"@ros2_lv/{domain}/{zid}/0/1/MP/%/%/tf_pub/%tf/tf2_msgs::msg::dds_::TFMessage_/{TF_HASH}/"
                  "::,100:,:,:,,")
