@@ -18,7 +18,7 @@ import numpy as np
 import numpy.typing as npt
 
 from robotmodel.kinematics._joints import KIND_PRISMATIC, KIND_REVOLUTE, JointTable
-from robotmodel.spatial import FloatArray, matrix_to_quat
+from robotmodel.spatial import FloatArray, matrix_to_quat, quat_multiply
 
 __all__ = ["CycleTables", "cross_matrix"]
 
@@ -27,12 +27,6 @@ def cross_matrix(axis: FloatArray) -> FloatArray:
     """The 3x3 matrix K with K·v = axis × v."""
     x, y, z = axis
     return np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])
-
-
-def _left_product(q: FloatArray) -> FloatArray:
-    """4x4 L with q ⊗ p = L·p, quaternions (x, y, z, w)."""
-    x, y, z, w = q
-    return np.array([[w, -z, y, x], [z, w, -x, y], [-y, x, w, z], [-x, -y, -z, w]])
 
 
 @dataclass(frozen=True)
@@ -52,16 +46,13 @@ class CycleTables:
         kinds = table.kinds[idx]
         q0 = matrix_to_quat(table.origin_rotation[idx]).reshape(-1, 4)
         axis = table.axis[idx]
-        ps, qs = [], []
-        for k in range(len(rows)):
-            left = _left_product(q0[k])
-            ps.append(left @ np.append(axis[k], 0.0))
-            qs.append(left @ np.array([0.0, 0.0, 0.0, 1.0]))
+        # q0 ⊗ (axis·sin, cos) = sin·(q0 ⊗ (axis, 0)) + cos·q0: spatial's product, once per joint.
+        ps = quat_multiply(q0, np.concatenate([axis, np.zeros((len(rows), 1))], axis=1)).reshape(-1, 4)
         r0_axis = np.einsum("jab,jb->ja", table.origin_rotation[idx], axis).reshape(-1, 3)
         return cls(
             rows=idx.astype(np.float64),
             half_i=np.where(kinds == KIND_REVOLUTE, 0.5j, 0.0j),
-            cos_sin=np.stack([np.array(qs).reshape(-1, 4), np.array(ps).reshape(-1, 4)], axis=1),
+            cos_sin=np.stack([q0, ps], axis=1),
             t0=table.origin_translation[idx],
             slide_axis=np.where((kinds == KIND_PRISMATIC)[:, None], r0_axis, 0.0),
         )
