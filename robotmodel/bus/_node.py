@@ -315,6 +315,7 @@ class Node:
 
     def create_publisher(self, msg_type: type[M] | str, topic: str, qos: QoSLike = QOS_DEFAULT) -> Publisher[M]:
         """A publisher of ``msg_type`` on ``topic``."""
+        self._check_open()
         pub: Publisher[M] = Publisher(self, codec_for(msg_type), self.resolve_topic_name(topic), _qos(qos))
         self._children.append(pub)
         return pub
@@ -322,6 +323,7 @@ class Node:
     def create_subscription(self, msg_type: type[M] | str, topic: str, callback: Callable[[M], None],
                             qos: QoSLike = QOS_DEFAULT, *, raw: bool = False) -> Subscription[M]:
         """Call ``callback(msg)`` for each message on ``topic`` (``callback(RawMessage)`` with ``raw``)."""
+        self._check_open()
         sub: Subscription[M] = Subscription(self, codec_for(msg_type), self.resolve_topic_name(topic), _qos(qos),
                                             callback, raw)
         self._children.append(sub)
@@ -330,10 +332,15 @@ class Node:
     def create_raw_subscription(self, topic: str, callback: Callable[[RawMessage], None],
                                 qos: QoSLike = QOS_DEFAULT) -> Subscription[RawMessage]:
         """Receive every sample on ``topic`` whatever its type, undecoded (for ``topic echo``)."""
+        self._check_open()
         sub: Subscription[RawMessage] = Subscription(self, None, self.resolve_topic_name(topic), _qos(qos),
                                                      callback, True)
         self._children.append(sub)
         return sub
+
+    def _check_open(self) -> None:
+        if self._token is None:
+            raise BusError(f"node '{self.entity.node_fqn}' is closed")
 
     def get_topic_names_and_types(self) -> list[tuple[str, list[str]]]:
         """Every topic of the domain with its types, sorted (rclpy's list)."""

@@ -207,3 +207,14 @@ def test_gid_hashes_the_token_as_written() -> None:
     entity = Entity.parse(token)
     assert entity.keyexpr != token  # ours leaves the default reliability and durability empty
     assert entity.gid == gid_of(token)
+
+
+def test_a_closed_node_or_publisher_refuses_with_bus_error() -> None:
+    node = Node("gone", backend="inprocess", domain_id=114)
+    pub = node.create_publisher(String, "x")
+    node.close()
+    with pytest.raises(BusError, match="'/gone' is closed"):
+        node.create_publisher(String, "y")
+    with pytest.raises(BusError, match="closed"):
+        pub.publish(String(data="z"))
+    node.close()  # twice is harmless
