@@ -207,7 +207,8 @@ class Subscription(Generic[M]):
         self.qos = qos
         self.codec = codec
         self._callback = callback
-        self._raw = raw
+        # Set before the subscriber exists: latched samples can arrive during its declaration.
+        self._decode: Callable[[bytes], Any] | None = None if raw or codec is None else codec.decode
         self._warner = _Warner()
         ctx = node.context
         typename = codec.typename if codec else ""
@@ -236,22 +237,20 @@ class Subscription(Generic[M]):
             self._warner.warn("attachment", f"dropped a message on '{self.topic_name}' {what} "
                                             "(rmw_zenoh's is 33 bytes)")
             return
-        if self._raw:
+        decode = self._decode
+        if decode is None:
             att = Attachment.decode(attachment)
             chunks = sample.key.split("/")
             typename = ros_type_name(chunks[-2]) if len(chunks) >= 3 else ""
-            self._deliver(RawMessage(self.topic_name, typename, sample.payload, att))
-            return
-        assert self.codec is not None
-        try:
-            msg = self.codec.decode(sample.payload)
-        except Exception as exc:  # any decoder failure is a bad payload, never a crash
-            self._warner.warn("decode", f"dropped a message on '{self.topic_name}' that does not decode as "
-                                        f"{self.codec.typename}: {type(exc).__name__}: {exc}")
-            return
-        self._deliver(msg)
-
-    def _deliver(self, item: Any) -> None:
+            item: Any = RawMessage(self.topic_name, typename, sample.payload, att)
+        else:
+            try:
+                item = decode(sample.payload)
+            except Exception as exc:  # any decoder failure is a bad payload, never a crash
+                self._warner.warn("decode", f"dropped a message on '{self.topic_name}' that does not decode as "
+                                            f"{self.codec.typename if self.codec else '?'}: "
+                                            f"{type(exc).__name__}: {exc}")
+                return
         try:
             self._callback(item)
         except Exception:
