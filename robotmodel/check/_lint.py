@@ -12,7 +12,7 @@ import numpy as np
 
 from robotmodel.errors import RobotModelError
 from robotmodel.model import Inertial, JointType, Mesh, RobotDescription
-from robotmodel.xacro import resolve_uri
+from robotmodel.resources import resolve_uri
 
 __all__ = ["Finding", "Severity", "lint"]
 
