@@ -134,3 +134,22 @@ def test_a_live_tf_publisher_puts_rmw_zenohs_bytes(bus_env: dict[str, str]) -> N
     digest = xxhash.xxh3_128(pub_token.encode()).intdigest()
     expected_gid = (digest & (2**64 - 1)).to_bytes(8, "little") + (digest >> 64).to_bytes(8, "little")
     assert att[17:] == expected_gid
+
+
+def test_design_doc_tokens_parse() -> None:
+    node = Entity.parse("@ros2_lv/2/aac3178e146ba6f1fc6e6a4085e77f21/0/0/NN/%/%/listener")
+    assert (node.domain_id, node.kind.value, node.namespace, node.node_name, node.enclave) == (
+        2, "NN", "/", "listener", "/")
+    assert node.keyexpr == "@ros2_lv/2/aac3178e146ba6f1fc6e6a4085e77f21/0/0/NN/%/%/listener"
+    server = Entity.parse(
+        "@ros2_lv/2/f9980ee0495eaafb3e38f0d19e2eae12/0/10/SS/%/%/add_two_ints_server/%add_two_ints/"
+        "example_interfaces::srv::dds_::AddTwoInts_/"
+        "RIHS01_e118de6bf5eeb66a2491b5bda11202e7b68f198d6f67922cf30364858239c81a/::,10:,:,:,,")
+    assert (server.kind.value, server.topic, server.typename) == (
+        "SS", "/add_two_ints", "example_interfaces/srv/AddTwoInts")
+    # A namespaced node: every '/' of the namespace and of the topic written '%'.
+    ns = Entity(0, "abc", 3, 4, Entity.parse(DESIGN_TALKER).kind, "/robot1", "talker", "/", "/robot1/chatter",
+                "std_msgs/msg/String", "RIHS01_x", Entity.parse(DESIGN_TALKER).qos)
+    assert ns.keyexpr == ("@ros2_lv/0/abc/3/4/MP/%/%robot1/talker/%robot1%chatter/std_msgs::msg::dds_::String_/"
+                          "RIHS01_x/::,7:,:,:,,")
+    assert Entity.parse(ns.keyexpr) == ns
