@@ -158,6 +158,9 @@ def run_echo(args: argparse.Namespace) -> int:
             if topic not in found:
                 print(f"WARNING: topic [{args.topic_name}] does not appear to be published yet", flush=True)
                 raise BusError("Could not determine the type for the passed topic")
+            if len(found[topic]) > 1:
+                raise BusError(f"Cannot echo topic '{args.topic_name}', as it contains more than one type: "
+                               f"[{', '.join(found[topic])}]")
             typename = found[topic][0]
         qos = _echo_qos(node, topic)
 

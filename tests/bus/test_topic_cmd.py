@@ -101,3 +101,17 @@ def test_yaml_of_arrays_strings_and_truncation() -> None:
     String = store.types["std_msgs/msg/String"]
     assert message_to_yaml(String("abcdef"), truncate_length=3) == "data: abc...\n"
     assert message_to_yaml(String("yes")) == "data: 'yes'\n"
+
+
+def test_topic_echo_refuses_a_topic_of_two_types(procs: Any) -> None:
+    from robotmodel.bus import Node, typestore
+
+    store = typestore()
+    with Node("two_types") as node:
+        node.create_publisher(store.types["std_msgs/msg/String"], "/mixed")
+        node.create_publisher(store.types["sensor_msgs/msg/JointState"], "/mixed")
+        echo = procs.cli("topic", "echo", "/mixed")
+        assert echo.popen.wait(30) == 1
+    echo.wait_for(bool, 2, stream="stderr")
+    assert echo.errors == ["robotmodel topic: error: Cannot echo topic '/mixed', as it contains more than one type: "
+                           "[sensor_msgs/msg/JointState, std_msgs/msg/String]"]
