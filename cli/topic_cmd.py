@@ -87,6 +87,7 @@ def run_list(args: argparse.Namespace) -> int:
     topics = [(n, t) for n, t in topics if args.include_hidden_topics or not _hidden(n)]
     if args.count_topics:
         print(len(topics))
+        return 0
     for name, types in topics:
         print(f"{name} [{', '.join(types)}]" if args.show_types else name)
     return 0

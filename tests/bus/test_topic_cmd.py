@@ -57,6 +57,9 @@ def test_topic_list_shows_the_latched_topic(procs: Any) -> None:
     typed = procs.cli("topic", "list", "-t")
     assert typed.popen.wait(30) == 0
     assert typed.wait_for(lambda ls: "/tf_static [tf2_msgs/msg/TFMessage]" in ls, 2), typed.lines
+    count = procs.cli("topic", "list", "-c")
+    assert count.popen.wait(30) == 0
+    assert count.wait_for(lambda ls: ls == ["1"], 2), count.lines
 
 
 def test_topic_echo_once_prints_ros2_yaml(procs: Any) -> None:
