@@ -97,9 +97,10 @@ class _Loader:
         if len(stamps) > 1 and not (stamps[1:] > stamps[:-1]).all():
             idx = np.lexsort((order, stamps))
             stamps, poses, pcodes = stamps[idx], poses[idx], pcodes[idx]
-        n2 = np.einsum("ij,ij->i", poses[:, 3:], poses[:, 3:])
-        good = np.isfinite(poses).all(axis=1) & (n2 > 0.0) & np.isfinite(n2) & (stamps >= 0)
-        if not good.all():
+        # One reduction finds the usual case (all finite, no negative stamp); zero quaternions
+        # are rare and left to insert_many, whose count of accepted rows tells them apart.
+        if not np.isfinite(poses.sum()) or stamps[0] < 0:
+            good = np.isfinite(poses).all(axis=1) & (stamps >= 0)
             self.skipped += int((~good).sum())
             stamps, poses, pcodes = stamps[good], poses[good], pcodes[good]
         if not len(stamps):

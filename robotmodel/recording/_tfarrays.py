@@ -52,8 +52,8 @@ class Block:
 class _Layout:
     parents: tuple[str, ...]
     children: tuple[str, ...]
-    stamp_idx: npt.NDArray[np.intp]  # (T * 8,) byte positions of sec, nanosec
-    pose_idx: npt.NDArray[np.intp]  # (T * 56,)
+    stamp_offs: list[int]  # where each transform's sec, nanosec start
+    pose_offs: list[int]  # where its seven doubles start
     struct_idx: npt.NDArray[np.intp]  # every other byte
     template: npt.NDArray[np.uint8]  # their values
 
@@ -149,11 +149,14 @@ class TFArrayDecoder:
         layouts = self._layouts.setdefault(length, [])
         tried = 0
         while left.size:
-            rows = arr[left]
+            rows = arr if left.size == len(items) else arr[left]
             taken = np.zeros(left.size, dtype=bool)
             for layout in layouts:
-                match = (rows[:, layout.struct_idx] == layout.template).all(axis=1) & ~taken
-                if match.any():
+                match = (np.take(rows, layout.struct_idx, axis=1) == layout.template).all(axis=1) & ~taken
+                if match.all():
+                    blocks.append(self._extract(layout, rows, orders[left]))
+                    taken = match
+                elif match.any():
                     blocks.append(self._extract(layout, rows[match], orders[left[match]]))
                     taken |= match
             left = left[~taken]
@@ -190,7 +193,7 @@ class TFArrayDecoder:
             value[off:off + 4] = True
         struct_idx = np.flatnonzero(~value)
         raw = np.frombuffer(data, dtype=np.uint8)
-        layout = _Layout(tuple(parents), tuple(children), stamp_idx, pose_idx, struct_idx, raw[struct_idx].copy())
+        layout = _Layout(tuple(parents), tuple(children), stamp_offs, pose_offs, struct_idx, raw[struct_idx].copy())
         block = self._extract(layout, raw[None, :], np.zeros(1, dtype=np.int64))
         expect_stamps = [r.stamp_ns for r in records]
         expect_poses = np.array([r.pose for r in records], dtype=np.float64).reshape(-1, 7)
@@ -201,14 +204,19 @@ class TFArrayDecoder:
 
     def _extract(self, layout: _Layout, rows: npt.NDArray[np.uint8], orders: npt.NDArray[np.int64]) -> Block:
         n, t = rows.shape[0], len(layout.children)
-        stamp_bytes = np.ascontiguousarray(np.take(rows, layout.stamp_idx, axis=1))
+        # One contiguous slice copy per transform beats a gather over every byte index.
+        stamp_bytes = np.empty((n, t, 8), dtype=np.uint8)
+        pose_bytes = np.empty((n, t, 56), dtype=np.uint8)
+        for j, (s_off, p_off) in enumerate(zip(layout.stamp_offs, layout.pose_offs, strict=True)):
+            stamp_bytes[:, j] = rows[:, s_off:s_off + 8]
+            pose_bytes[:, j] = rows[:, p_off:p_off + 56]
         if self.ros1:
             pairs = stamp_bytes.view("<u4").reshape(n, t, 2).astype(np.int64)
         else:
             pairs = stamp_bytes.view("<i4").reshape(n, t, 2).astype(np.int64)
             pairs[..., 1] &= 0xFFFFFFFF  # nanosec is unsigned
         stamps = pairs[..., 0] * _NS + pairs[..., 1]
-        poses = np.ascontiguousarray(np.take(rows, layout.pose_idx, axis=1)).view("<f8").reshape(n, t, 7)
+        poses = pose_bytes.view("<f8").reshape(n, t, 7)
         return Block(layout.parents, layout.children, stamps, poses, orders)
 
 
