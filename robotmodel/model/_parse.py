@@ -8,12 +8,14 @@ rejected here, so every RobotDescription is a valid tree.
 
 from __future__ import annotations
 
-import math
 import re
 import xml.etree.ElementTree as ET
 
 from robotmodel.errors import URDFError, URDFParseError
 from robotmodel.model._locate import locate
+from robotmodel.model._numbers import num as _num
+from robotmodel.model._numbers import vec as _vec
+from robotmodel.model._numbers import vec3 as _vec3
 from robotmodel.model._types import (
     Box,
     Collision,
@@ -40,63 +42,6 @@ from robotmodel.model._types import (
 __all__ = ["parse_urdf"]
 
 _TYPES = {t.value: t for t in JointType}
-
-
-# Python's float() also takes "1_000" and non-ASCII digits, which no C++ URDF parser does.
-_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?|[+-]?(?:nan|inf|infinity)",
-                     re.IGNORECASE | re.ASCII)
-# urdfdom reads numbers with a C++ stream: leading C whitespace is skipped, anything after
-# the number (trailing whitespace included) makes it reject the value.
-_C_SPACE = " \t\n\v\f\r"
-
-
-def _float(text: str) -> float:
-    number = text.lstrip(_C_SPACE)
-    if not _NUMBER.fullmatch(number):
-        raise ValueError(text)
-    return float(number)
-
-
-def _shown(text: str) -> str:
-    """``text`` for a one-line message: control characters escaped, as in a Python literal."""
-    return "".join(c if c.isprintable() or c == " " else repr(c)[1:-1] for c in text)
-
-
-def _num(text: str, what: str) -> float:
-    try:
-        value = _float(text)
-    except ValueError:
-        raise URDFParseError(f"{what}: unable to parse [{_shown(text)}] as a number") from None
-    if not math.isfinite(value):
-        raise URDFParseError(f"{what}: value [{_shown(text)}] is not a finite number")
-    return value
-
-
-def _vec(text: str, n: int, what: str) -> tuple[float, ...]:
-    # As urdfdom: components are separated by spaces only (a tab or newline between two
-    # numbers makes one malformed component), and each is parsed before the count is checked.
-    parts = [part for part in text.split(" ") if part]
-    values = []
-    for part in parts:
-        try:
-            values.append(_float(part))
-        except ValueError:
-            raise URDFParseError(
-                f"{what}: Unable to parse component [{_shown(part)}] to a double (while parsing a vector value)"
-            ) from None
-    if len(parts) != n:
-        raise URDFParseError(
-            f"{what}: Parser found {len(parts)} elements but {n} expected while parsing vector [{_shown(text)}]"
-        )
-    for part, value in zip(parts, values, strict=True):
-        if not math.isfinite(value):
-            raise URDFParseError(f"{what}: value [{_shown(part)}] is not a finite number")
-    return tuple(values)
-
-
-def _vec3(text: str, what: str) -> Vec3:
-    x, y, z = _vec(text, 3, what)
-    return (x, y, z)
 
 
 def _quat_to_rpy(x: float, y: float, z: float, w: float, what: str) -> Vec3:
