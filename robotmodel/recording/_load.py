@@ -27,7 +27,7 @@ import numpy.typing as npt
 from robotmodel.errors import MessageError, RecordingError
 from robotmodel.msgs import TFRecord, decode_tf_records
 from robotmodel.recording._joints import JointStateTF
-from robotmodel.recording._open import Recording
+from robotmodel.recording._open import Recording, reader_errors
 from robotmodel.recording._progress import Progress
 from robotmodel.recording._tfarrays import Block, TFArrayDecoder, ros1_reference
 
@@ -214,10 +214,9 @@ def load_recording(
         description: str | None = None
         bar = Progress(str(rec.path), sum(t.count for t in rec.topics() if t.name in roles), progress)
         n = 0
-        last_ns: int | None = None
+        damaged: tuple[type[BaseException], ...] = (MessageError, *reader_errors())
         try:
-            for n, (topic, t_ns, data) in enumerate(rec.messages([t for t in wanted if t in roles]), 1):
-                last_ns = t_ns
+            for n, (topic, _t_ns, data) in enumerate(rec.messages([t for t in wanted if t in roles]), 1):
                 role = roles[topic]
                 if role == "tf":
                     loader.decoder.add(n, data)
@@ -234,8 +233,8 @@ def load_recording(
             loader.flush()
         except RecordingError:
             raise
-        except (MessageError, ValueError, IndexError, KeyError, UnicodeDecodeError, AssertionError) as exc:
-            raise rec.damaged(exc, last_ns) from None
+        except damaged as exc:
+            raise rec.damaged(exc) from None
         finally:
             bar.close()
         accepted, skipped = loader.accepted, loader.skipped

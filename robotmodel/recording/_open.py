@@ -9,6 +9,7 @@ file and how many messages were read before it.
 
 from __future__ import annotations
 
+import importlib
 import struct
 from collections.abc import Collection, Iterator
 from dataclasses import dataclass
@@ -22,7 +23,7 @@ from robotmodel.errors import RecordingError
 if TYPE_CHECKING:
     from rosbags.typesys.store import Typestore
 
-__all__ = ["Format", "Recording", "Topic", "detect_format", "ros1_typestore"]
+__all__ = ["Format", "Recording", "Topic", "detect_format", "reader_errors", "ros1_typestore"]
 
 _ROS1_MAGIC = b"#ROSBAG V2.0\n"
 _MCAP_MAGIC = b"\x89MCAP0\r\n"
@@ -81,13 +82,49 @@ def ros1_typestore() -> Typestore:
     return store
 
 
-def _reader_errors() -> tuple[type[BaseException], ...]:
+@lru_cache(maxsize=1)
+def reader_errors() -> tuple[type[BaseException], ...]:
+    """What rosbags, mcap, sqlite3 and the decompressors raise for damaged input."""
     from rosbags.rosbag1 import ReaderError as Ros1Error
     from rosbags.rosbag2 import ReaderError as Ros2Error
+    from rosbags.serde import SerdeError
 
     # Damaged files surface from rosbags' parsers and the decompressors as many types.
-    return (Ros1Error, Ros2Error, OSError, EOFError, ValueError, KeyError, IndexError, struct.error,
-            AssertionError, TypeError, AttributeError, RuntimeError, MemoryError)
+    found: list[type[BaseException]] = [Ros1Error, Ros2Error, SerdeError, OSError, EOFError, ValueError, KeyError,
+                                        IndexError, struct.error, AssertionError, TypeError, AttributeError,
+                                        RuntimeError, MemoryError]
+    for module in ("backports.zstd", "zstandard", "sqlite3"):
+        try:
+            found.append(importlib.import_module(module).Error if module == "sqlite3"
+                         else importlib.import_module(module).ZstdError)
+        except ImportError:
+            continue
+    try:
+        from mcap.exceptions import McapError
+
+        found.append(McapError)
+    except ImportError:
+        pass
+    return tuple(found)
+
+
+def _truncated_mcap(path: Path, exc: BaseException) -> RecordingError:
+    """The error for an MCAP without a readable summary, saying how much its records still hold."""
+    from mcap.records import Message
+    from mcap.stream_reader import StreamReader
+
+    count, last = 0, None
+    try:
+        with path.open("rb") as f:
+            for record in StreamReader(f, emit_chunks=False).records:
+                if isinstance(record, Message):
+                    count += 1
+                    last = record.log_time
+    except reader_errors():
+        pass  # counting stops at the first damaged record
+    upto = f" up to t={last / 1e9:.9f}" if last is not None else ""
+    return RecordingError(f"{path}: truncated or corrupt MCAP ({_reason(exc)}); {count} message(s) readable{upto} "
+                          "(the mcap CLI's 'mcap recover' rebuilds such a file)")
 
 
 def _reason(exc: BaseException) -> str:
@@ -108,7 +145,8 @@ class Recording:
         self.format = detect_format(self.path)
         self.ros1 = self.format is Format.ROS1_BAG
         self.read = 0  # messages delivered so far (named in errors)
-        errors = _reader_errors()
+        self.last_ns: int | None = None
+        errors = reader_errors()
         try:
             if self.ros1:
                 from rosbags.rosbag1 import Reader as Ros1Reader
@@ -120,6 +158,8 @@ class Recording:
                 self._reader = Ros2Reader(self.path)
             self._reader.open()
         except errors as exc:
+            if self.format is Format.MCAP:
+                raise _truncated_mcap(self.path, exc) from None
             raise RecordingError(f"{self.path}: cannot open as a {self.format.value}: {_reason(exc)}") from None
         self._connections: dict[str, list[Any]] = {}
         for conn in self._reader.connections:
@@ -135,7 +175,7 @@ class Recording:
         """Close the file (idempotent)."""
         try:
             self._reader.close()
-        except _reader_errors():
+        except reader_errors():
             pass
 
     @property
@@ -170,17 +210,19 @@ class Recording:
         conns = [c for t in topics for c in self._connections.get(t, ())]
         if not conns:
             return
-        errors = _reader_errors()
+        errors = reader_errors()
         try:
             for conn, t, data in self._reader.messages(connections=conns):
+                self.last_ns = t
                 yield conn.topic, t, data
                 self.read += 1
         except errors as exc:
             raise self.damaged(exc) from None
 
-    def damaged(self, exc: BaseException, last_ns: int | None = None) -> RecordingError:
+    def damaged(self, exc: BaseException) -> RecordingError:
         """The error for a file that failed mid-read: what broke and how much was read."""
-        where = f", up to t={last_ns / 1e9:.9f}" if last_ns is not None else ""
+        last_ns = self.last_ns
+        where = f" (log time up to {last_ns / 1e9:.9f})" if last_ns is not None else ""
         return RecordingError(f"{self.path}: truncated or corrupt {self.format.value} after {self.read} "
                               f"message(s){where}: {_reason(exc)}")
 

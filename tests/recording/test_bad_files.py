@@ -1,0 +1,125 @@
+"""Bad recordings: one line naming the file and what was readable, never a traceback; rejected transforms counted."""
+
+from __future__ import annotations
+
+import math
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from recording.bagfiles import NS, Msg, write, write_mcap
+
+from robotmodel.errors import RecordingError
+from robotmodel.recording import load_buffer, load_recording
+
+T0 = 1_700_000_000 * NS
+
+
+def tf_msgs(n: int) -> list[Msg]:
+    out = []
+    for k in range(n):
+        t = T0 + k * 10_000_000
+        out.append(Msg("/tf", t, "tf", [("odom", f"link_{j}", t, (0.1 * k, j, 0.0, 0.0, 0.0, 0.0, 1.0))
+                                        for j in range(20)]))
+    return out
+
+
+def check_cli(path: Path, capsys_words: tuple[str, ...] = ()) -> str:
+    """``robotmodel tf2-echo --bag PATH ...`` fails with exit 1 and one stderr line naming the file."""
+    proc = subprocess.run([sys.executable, "-m", "robotmodel.cli.main", "tf2-echo", "--bag", str(path), "odom",
+                           "link_0", "--time", "1700000000", *capsys_words], capture_output=True, text=True,
+                          timeout=120)
+    assert proc.returncode == 1, proc.stderr
+    assert "Traceback" not in proc.stderr
+    lines = proc.stderr.strip().splitlines()
+    assert len(lines) == 1, proc.stderr
+    assert str(path) in lines[0]
+    assert proc.stdout == ""
+    return lines[0]
+
+
+def test_empty_file(tmp_path):
+    path = tmp_path / "empty.mcap"
+    path.write_bytes(b"")
+    with pytest.raises(RecordingError, match="empty"):
+        load_buffer(path)
+    check_cli(path)
+
+
+def test_wrong_format(tmp_path):
+    path = tmp_path / "notes.bag"
+    path.write_text("these are not the transforms you are looking for\n")
+    with pytest.raises(RecordingError, match="not a recording"):
+        load_buffer(path)
+    assert "not a recording" in check_cli(path)
+
+
+def test_missing_file_and_folder_without_metadata(tmp_path):
+    with pytest.raises(RecordingError, match="cannot read"):
+        load_buffer(tmp_path / "nothere.mcap")
+    with pytest.raises(RecordingError, match="metadata.yaml"):
+        load_buffer(tmp_path)
+
+
+def test_truncated_mcap_says_how_much_is_readable(tmp_path):
+    path = write_mcap(tmp_path / "cut.mcap", tf_msgs(200), {"/tf": "tf2_msgs/msg/TFMessage"}, chunk_size=4096)
+    data = path.read_bytes()
+    path.write_bytes(data[: len(data) * 6 // 10])
+    with pytest.raises(RecordingError) as info:
+        load_buffer(path)
+    text = str(info.value)
+    assert str(path) in text and "truncated" in text
+    readable = int(text.split(" message(s) readable")[0].rsplit(" ", 1)[1])
+    assert 0 < readable < 200
+    assert "\n" not in text
+    check_cli(path)
+
+
+def test_corrupt_chunk_in_mcap(tmp_path):
+    path = write_mcap(tmp_path / "bad.mcap", tf_msgs(200), {"/tf": "tf2_msgs/msg/TFMessage"}, chunk_size=4096)
+    data = bytearray(path.read_bytes())
+    mid = len(data) // 2
+    data[mid:mid + 64] = bytes(64)  # zeroes in the middle of a chunk's compressed bytes
+    path.write_bytes(bytes(data))
+    with pytest.raises(RecordingError) as info:
+        load_buffer(path)
+    assert str(path) in str(info.value) and "\n" not in str(info.value)
+    check_cli(path)
+
+
+@pytest.mark.parametrize("fmt", ["ros1", "db3"])
+def test_truncated_bag_and_db3(tmp_path, fmt):
+    path = write(tmp_path / "cut", fmt, tf_msgs(100))
+    data = path.read_bytes()
+    path.write_bytes(data[: len(data) // 2])
+    with pytest.raises(RecordingError) as info:
+        load_buffer(path)
+    assert str(path) in str(info.value) and "\n" not in str(info.value)
+    check_cli(path)
+
+
+def test_topic_of_unexpected_type(tmp_path):
+    msgs = [Msg("/tf", T0, "str", "not a TFMessage")]
+    path = write(tmp_path / "typed", "mcap", msgs)
+    with pytest.raises(RecordingError, match=r"topic /tf has type std_msgs/msg/String, expected tf2_msgs/msg/TFMessage"):
+        load_buffer(path)
+    check_cli(path)
+
+
+def test_non_finite_transforms_skipped_with_a_count(tmp_path, caplog):
+    msgs = tf_msgs(30)
+    bad = {(3, 0), (3, 5), (17, 19), (29, 2)}
+    for k, j in bad:
+        parent, child, t, pose = msgs[k].value[j]
+        value = [math.nan, math.inf, -math.inf, math.nan][len(child) % 4]
+        msgs[k].value[j] = (parent, child, t, (pose[0], value, *pose[2:]))
+    msgs[5].value[1] = (*msgs[5].value[1][:3], (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0))  # zero quaternion
+    path = write(tmp_path / "nan", "mcap", msgs)
+    loaded = load_recording(path, progress=False)
+    assert loaded.skipped == len(bad) + 1
+    assert loaded.transforms == 30 * 20 - len(bad) - 1
+    assert "skipped 5 transform(s)" in caplog.text
+    # A skipped sample is absent: the lookup at its stamp interpolates its neighbours.
+    pose, _ = loaded.buffer.lookup_ns("odom", "link_5", T0 + 3 * 10_000_000)
+    assert pose[:3] == pytest.approx((0.3, 5.0, 0.0))
