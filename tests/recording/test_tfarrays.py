@@ -5,7 +5,6 @@ from __future__ import annotations
 import random
 import struct
 
-import numpy as np
 import pytest
 from recording.bagfiles import NS, TS1, TS2, Msg, build
 

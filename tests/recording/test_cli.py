@@ -1,0 +1,114 @@
+"""tf2-echo --bag, view-frames --bag and tf-export on real recordings, as subprocesses."""
+
+from __future__ import annotations
+
+import csv
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+from recording.bagfiles import write
+from recording.test_load import DT, TICKS, expected_world_cam, scenario, stamp
+from robotmodel.cli._echo_fmt import euler_ypr
+
+
+def run(*args: str, cwd: Path | None = None) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([sys.executable, "-m", "robotmodel.cli.main", *args], check=False, capture_output=True,
+                          text=True, timeout=120, cwd=cwd)
+
+
+@pytest.fixture(scope="module")
+def bag(tmp_path_factory) -> Path:
+    return write(tmp_path_factory.mktemp("cli") / "run", "ros1", scenario())
+
+
+def printed_blocks(text: str) -> list[tuple[str, list[float]]]:
+    blocks = []
+    for block in text.split("At time ")[1:]:
+        when = block.splitlines()[0]
+        numbers = [float(v) for v in re.search(r"Translation: \[(.*)\]", block).group(1).split(",")]
+        blocks.append((when, numbers))
+    return blocks
+
+
+def test_tf2_echo_at_a_time(bag):
+    t = stamp(5) + DT // 4
+    proc = run("tf2-echo", "--bag", str(bag), "world", "cam", "--time", f"{t // 10**9}.{t % 10**9:09d}")
+    assert proc.returncode == 0, proc.stderr
+    ((when, translation),) = printed_blocks(proc.stdout)
+    assert when == f"{t // 10**9}.{t % 10**9}"  # tf2_echo prints sec.nanosec unpadded
+    want = expected_world_cam(t)
+    assert translation == [round(v, 3) for v in want[:3, 3]]
+    roll, pitch, yaw = euler_ypr(want[:3, :3].tolist())
+    assert f"- Rotation: in RPY (radian) [{roll:.3f}, {pitch:.3f}, {yaw:.3f}]" in proc.stdout
+
+
+def test_tf2_echo_relative_time_and_every(bag):
+    proc = run("tf2-echo", "--bag", str(bag), "world", "cam", "--time=+0.1")
+    assert proc.returncode == 0, proc.stderr
+    assert printed_blocks(proc.stdout)[0][0] == f"{stamp(2) // 10**9}.{stamp(2) % 10**9}"
+    proc = run("tf2-echo", "--bag", str(bag), "world", "cam", "--every", "0.25")
+    assert proc.returncode == 0, proc.stderr
+    span = stamp(TICKS - 1) - stamp(0)
+    assert len(printed_blocks(proc.stdout)) == span // 250_000_000 + 1
+
+
+def test_tf2_echo_failure_at_a_time_outside_the_recording(bag):
+    proc = run("tf2-echo", "--bag", str(bag), "world", "cam", "--time", "1")
+    assert proc.returncode == 1
+    assert proc.stdout.startswith("Failure at ")
+    assert "Lookup would require extrapolation into the past" in proc.stdout
+
+
+def test_tf2_echo_bad_words(bag):
+    proc = run("tf2-echo", "world", "cam", "--time", "3")
+    assert proc.returncode == 2 and "need --bag" in proc.stderr
+    proc = run("tf2-echo", "--bag", str(bag), "world", "cam", "--time", "soon")
+    assert proc.returncode == 2 and proc.stderr.count("\n") == 1 and "--time" in proc.stderr
+    proc = run("tf2-echo", "--bag", str(bag), "world", "cam", "--time", "3", "--every", "1")
+    assert proc.returncode == 2
+
+
+def test_view_frames_from_a_bag(bag, tmp_path):
+    proc = run("view-frames", "--bag", str(bag), "-o", "tree", cwd=tmp_path)
+    assert proc.returncode == 0, proc.stderr
+    gv = (tmp_path / "tree.gv").read_text()
+    for parent, child in (("world", "odom"), ("odom", "base"), ("base", "cam"), ("world", "map")):
+        assert f'"{parent}" -> "{child}"' in gv
+    assert "Listening" not in proc.stderr
+
+
+def test_tf_export_csv_at_recorded_stamps_and_at_a_rate(bag, tmp_path):
+    out = tmp_path / "poses.csv"
+    proc = run("tf-export", "--bag", str(bag), "world", "cam", "-o", str(out))
+    assert proc.returncode == 0, proc.stderr
+    rows = list(csv.DictReader(out.open()))
+    assert [int(r["stamp_ns"]) for r in rows] == [stamp(k) for k in range(TICKS)]
+    for r in rows:
+        t = int(r["stamp_ns"])
+        assert r["time_s"] == f"{t // 10**9}.{t % 10**9:09d}"
+        np.testing.assert_allclose([float(r[c]) for c in ("x", "y", "z")], expected_world_cam(t)[:3, 3], atol=1e-12)
+    proc = run("tf-export", "--bag", str(bag), "world", "cam", "-o", str(out), "--rate", "7")
+    assert proc.returncode == 0, proc.stderr
+    stamps = [int(r["stamp_ns"]) for r in csv.DictReader(out.open())]
+    assert stamps[0] == stamp(0) and np.all(np.diff(stamps) == round(1e9 / 7))
+    assert stamps[-1] <= stamp(TICKS - 1) < stamps[-1] + round(1e9 / 7)
+
+
+def test_tf_export_errors_leave_no_file(bag, tmp_path):
+    out = tmp_path / "poses.csv"
+    proc = run("tf-export", "--bag", str(bag), "world", "nowhere", "-o", str(out))
+    assert proc.returncode == 1 and "nowhere" in proc.stderr and "Traceback" not in proc.stderr
+    assert not out.exists()
+    try:
+        import pyarrow  # noqa: F401
+    except ImportError:
+        proc = run("tf-export", "--bag", str(bag), "world", "cam", "-o", str(tmp_path / "p.parquet"))
+        assert proc.returncode == 1 and "pyarrow" in proc.stderr
+        assert not list(tmp_path.glob("*parquet*"))
+    else:
+        proc = run("tf-export", "--bag", str(bag), "world", "cam", "-o", str(tmp_path / "p.parquet"))
+        assert proc.returncode == 0
