@@ -42,6 +42,10 @@ class RawPublisher(Handle):
     def put(self, payload: bytes, attachment: bytes) -> None:
         """Send one sample."""
 
+    @abstractmethod
+    def matched(self) -> bool:
+        """Whether a subscriber (ours, ROS's or plain zenoh's) is known to match the key now."""
+
 
 class Backend(ABC):
     """One session on a transport (rmw_zenoh's context)."""

@@ -95,6 +95,11 @@ class _LocalPublisher(RawPublisher):
         for cb in targets:
             cb(sample)
 
+    def matched(self) -> bool:
+        pub = self._pub
+        with self._bus.lock:
+            return pub is not None and any(key_matches(s.pattern, pub.key) for s in self._bus.subs)
+
     def close(self) -> None:
         pub, self._pub = self._pub, None
         if pub is not None:

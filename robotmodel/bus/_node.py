@@ -172,6 +172,15 @@ class Publisher(Generic[M]):
             self._seq = seq + 1
             pub.put(payload, self._attachment(seq, time.time_ns()))
 
+    def matched(self) -> bool:
+        """Whether any subscriber matches this publisher's key now (plain zenoh ones included).
+
+        Samples published before a subscriber is matched do not reach it (unless latched).
+        """
+        with self._lock:
+            pub = self._pub
+        return pub is not None and pub.matched()
+
     def get_subscription_count(self) -> int:
         """How many subscriptions on this topic the graph shows (any type)."""
         return len(self._node.context.graph.endpoints(self.topic_name, EntityKind.SUBSCRIPTION))

@@ -107,6 +107,15 @@ class _Publisher(RawPublisher):
     def put(self, payload: bytes, attachment: bytes) -> None:
         self._put(payload, attachment=attachment)
 
+    def matched(self) -> bool:
+        pub = self._pub
+        if pub is None:
+            return False
+        status = getattr(pub, "matching_status", None)
+        # zenoh-python's AdvancedPublisher does not report matching; a latched publisher's
+        # cache serves subscribers whenever they come, so it counts as matched.
+        return True if status is None else bool(status.matching)
+
     def close(self) -> None:
         pub, self._pub = self._pub, None
         if pub is not None:

@@ -21,6 +21,7 @@ import sys
 import threading
 import time
 from collections import Counter
+from collections.abc import Callable
 
 from robotmodel.bus import QOS_TF, QOS_TF_STATIC, QOS_TF_STATIC_LISTENER, Node
 from robotmodel.msgs import TFMessage, make_transform
@@ -34,6 +35,14 @@ def say(*words: object) -> None:
     with _SAY:
         sys.stdout.write(line)
         sys.stdout.flush()
+
+
+def wait_until(condition: Callable[[], bool], end: float) -> bool:
+    while not condition():
+        if time.monotonic() > end:
+            return False
+        time.sleep(0.005)
+    return True
 
 
 def wait_forever() -> None:
@@ -50,7 +59,9 @@ def main(argv: list[str]) -> int:
         elif role == "tf-pub":
             ident, count = argv[1], int(argv[2])
             pub = node.create_publisher(TFMessage, "/tf", QOS_TF)
-            if not pub.wait_for_subscriptions(1, timeout=30.0):
+            end = time.monotonic() + 30
+            # The listener's token (graph) and its subscriber (routing) both known here.
+            if not pub.wait_for_subscriptions(1, timeout=30.0) or not wait_until(pub.matched, end):
                 say("no subscription")
                 return 1
             for i in range(count):

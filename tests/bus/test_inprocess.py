@@ -218,3 +218,13 @@ def test_a_closed_node_or_publisher_refuses_with_bus_error() -> None:
     with pytest.raises(BusError, match="closed"):
         pub.publish(String(data="z"))
     node.close()  # twice is harmless
+
+
+def test_matched_follows_subscribers() -> None:
+    with Node("m", backend="inprocess", domain_id=115) as node:
+        pub = node.create_publisher(String, "/m")
+        assert not pub.matched()
+        sub = node.create_subscription(String, "/m", lambda m: None)
+        assert pub.matched()
+        sub.close()
+        assert not pub.matched()

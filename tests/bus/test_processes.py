@@ -95,6 +95,9 @@ def test_garbage_on_the_tf_key_is_dropped_with_a_warning(procs: Any, bus_env: di
     with Node("vandal") as node:
         pub = node.create_publisher(TFMessage, "/tf", QOS_TF)
         assert pub.wait_for_subscriptions(1, 20)
+        end = time.monotonic() + 20
+        while not pub.matched() and time.monotonic() < end:
+            time.sleep(0.01)
         session = node.context.backend.session  # type: ignore[attr-defined]
         good_attachment = Attachment(1, time.time_ns(), gid_of("vandal")).encode()
         session.put(key, b"\x00\x01\x00\x00\xff\xff\xff\x7fnot a TFMessage", attachment=good_attachment)

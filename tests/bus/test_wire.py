@@ -95,13 +95,13 @@ def test_a_live_tf_publisher_puts_rmw_zenohs_bytes(bus_env: dict[str, str]) -> N
         try:
             spy.declare_subscriber(f"{domain}/**", on_sample)
             pub = node.create_publisher(TFMessage, "/tf", QOS_TF)
-            # The spy sees both tokens once the sessions are linked; its subscriber was declared
-            # on that link before its query, so the publisher's session knows it by then.
+            # Ready when the spy sees both tokens and the publisher sees the spy's subscriber.
             tokens: list[str] = []
             end = time.monotonic() + 10
-            while len(tokens) < 2 and time.monotonic() < end:
+            while (len(tokens) < 2 or not pub.matched()) and time.monotonic() < end:
                 tokens = [str(r.ok.key_expr) for r in spy.liveliness().get(f"@ros2_lv/{domain}/**", timeout=2)
                           if r.ok is not None]
+                time.sleep(0.01)
             before = time.time_ns()
             pub.publish(TFMessage([make_transform("world", "base_link", (1.0, 2.0, 3.0), (0.0, 0.0, 0.6, 0.8),
                                                   stamp_ns=12_500_000_000)]))
