@@ -215,3 +215,14 @@ def test_router_config_uri(procs: Any, bus_env: dict[str, str], new_port: Any, t
     listener = procs.run(procs.peer_args("static-print"), env=peers_env)
     assert listener.wait_for(lambda ls: len(static_frames(ls)) == 2, 20), listener.lines
     assert router.terminate() == 0
+
+
+def test_ros_domain_id_separates_processes(procs: Any, bus_env: dict[str, str]) -> None:
+    other = dict(bus_env, ROS_DOMAIN_ID=str(int(bus_env["ROS_DOMAIN_ID"]) + 1))
+    stranger = procs.run(procs.peer_args("static-print"), env=other)
+    stranger.wait_line("ready")
+    procs.peer("static-pub").wait_line("ready")
+    neighbour = procs.peer("static-print")  # same domain as the publisher: the control
+    assert neighbour.wait_for(lambda ls: len(static_frames(ls)) == 2, 20)
+    # The stranger shares the port and the links, but not the domain's keys.
+    assert not stranger.wait_for(lambda ls: bool(static_frames(ls)), 1.0), stranger.lines
