@@ -197,3 +197,20 @@ def test_batched_interpolation_returns_the_first_rotation_at_zero_angle() -> Non
     out = poses_interpolate(a, np.array([[2, 0, 0, 0, 0, 0, 1.0]]), [0.25])
     np.testing.assert_array_equal(out, [[0.5, 0, 0, 0, 0, 0, 1.0]])
     assert pose_interpolate(tuple(a[0]), (2, 0, 0, 0, 0, 0, 1.0), 0.25) == (0.5, 0, 0, 0, 0, 0, 1.0)
+
+
+@given(quat, st.lists(st.floats(1e-9, 1e-2), min_size=1, max_size=10), st.floats(0, 1))
+def test_batched_interpolation_is_exact_for_the_small_steps_of_real_streams(q, angles, r) -> None:
+    # Consecutive TF samples differ by small rotations, where SLERP's sine ratios matter most.
+    a = _pose((0.0, 0.0, 0.0), q)
+    qa = np.array(a[3:])
+    rows_a, rows_b = [], []
+    for k, angle in enumerate(angles):
+        axis = np.array([1.0, -2.0, 0.5 + k])
+        axis /= np.linalg.norm(axis)
+        step = np.array([*(math.sin(angle / 2) * axis), math.cos(angle / 2)])
+        rows_a.append(a)
+        rows_b.append((1.0, 2.0, 3.0, *quat_multiply(qa, step)))
+    batched = poses_interpolate(np.array(rows_a), np.array(rows_b), np.full(len(angles), r))
+    scalar = [pose_interpolate(x, tuple(y), r) for x, y in zip(rows_a, rows_b, strict=True)]
+    np.testing.assert_allclose(batched, scalar, rtol=1e-13, atol=1e-15)
