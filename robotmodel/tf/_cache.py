@@ -186,8 +186,9 @@ class TimeCache:
         """Insert rows in order, with exactly the result of one :meth:`insert` per row.
 
         Returns the indices of the rows rejected as too old. Strictly increasing stamps
-        newer than the cache's newest are appended in one step; anything else (out of
-        order, repeated stamps) goes row by row.
+        newer than the cache's newest are appended in one step, and an unbounded cache
+        merges rows in any order in one step; otherwise (a window and rows out of order or
+        repeating stamps) they go row by row.
         """
         n = stamps.shape[0]
         if n == 0:
@@ -195,6 +196,10 @@ class TimeCache:
         empty = self._end == self._start
         increasing = n == 1 or bool((stamps[1:] > stamps[:-1]).all())
         if not increasing or not (empty or int(stamps[0]) > self._newest):
+            if self.window is None:
+                self._merge(stamps, poses, parent)
+                return []
+            # With a window, the order decides what is pruned or too old: one row at a time.
             rows = poses.tolist()
             return [k for k, s in enumerate(stamps.tolist()) if not self.insert(s, tuple(rows[k]), parent)]
         if self.window is not None and (n >= 2 or not empty):
@@ -220,6 +225,40 @@ class TimeCache:
         if empty:
             self._oldest = int(stamps[0])
         return []
+
+    def _merge(self, stamps: npt.NDArray[np.int64], poses: npt.NDArray[np.float64], parent: int) -> None:
+        """Unbounded cache, rows in any order: the result of inserting them one by one.
+
+        Nothing is pruned or too old, so only the order among equal stamps matters: earlier
+        inserted first (a stable sort, existing samples before the rows), and a sample equal
+        to an earlier one at its stamp (pose and parent) is not stored again.
+        """
+        old_stamps, old_poses, old_parents = self.arrays()
+        all_stamps = np.concatenate([old_stamps, stamps])
+        all_poses = np.concatenate([old_poses, poses])
+        all_parents = np.concatenate([old_parents, np.full(stamps.shape[0], parent, dtype=np.int32)])
+        order = np.argsort(all_stamps, kind="stable")
+        ordered = all_stamps[order]
+        repeated = np.flatnonzero(ordered[1:] == ordered[:-1])
+        if repeated.size:
+            keep = np.ones(order.shape[0], dtype=bool)
+            seen: dict[tuple[int, int, bytes], None] = {}
+            for k in np.union1d(repeated, repeated + 1).tolist():
+                row = int(order[k])
+                # + 0.0 turns -0.0 into 0.0: equal as numbers, as the row-by-row comparison has it.
+                key = (int(all_stamps[row]), int(all_parents[row]), (all_poses[row] + 0.0).tobytes())
+                if key in seen:
+                    keep[k] = False
+                seen[key] = None
+            order = order[keep]
+        live = order.shape[0]
+        self._start = self._end = 0
+        self._allocate(live + max(live >> 3, _MIN_SPARE))
+        self._stamps[:live] = all_stamps[order]
+        self._poses[:live] = all_poses[order]
+        self._parents[:live] = all_parents[order]
+        self._end = live
+        self._oldest, self._newest = int(self._stamps[0]), int(self._stamps[live - 1])
 
     # ------------------------------------------------------------------ lookup
     def sample(self, t: int) -> tuple[Pose7, int] | CacheMiss:

@@ -273,3 +273,21 @@ def test_cancelled_request_is_forgotten() -> None:
     bad = buf.wait_for_transform_async("", "base", Time())  # waiting cannot fix an argument
     assert isinstance(bad.exception(timeout=0), InvalidArgumentException)
     assert buf._waiters == {}
+
+
+def test_unbounded_bulk_merge_of_shuffled_rows_equals_single_inserts() -> None:
+    rng = np.random.default_rng(7)
+    stamps = rng.integers(0, 500, 3000)  # out of order, many repeated stamps
+    pick = rng.integers(0, len(POOL), 3000)
+    poses = np.array([POOL[k] for k in pick])
+    poses[::7, 0] = -0.0  # -0.0 and 0.0 rows are equal samples
+    poses[1::7, 0] = 0.0
+    one_by_one, bulk = Buffer(unbounded=True), Buffer(unbounded=True)
+    one_by_one.insert_many("p", "c", [1000], [POOL[0]], "me")
+    bulk.insert_many("p", "c", [1000], [POOL[0]], "me")
+    for s, row in zip(stamps.tolist(), poses.tolist(), strict=True):
+        one_by_one.insert("p", "c", s, tuple(row), "me")
+    assert bulk.insert_many("p", "c", stamps, poses, "me") == 3000
+    for a, b in zip(one_by_one._caches[one_by_one._ids["c"]].arrays(), bulk._caches[bulk._ids["c"]].arrays(),
+                    strict=True):
+        np.testing.assert_array_equal(a, b)
