@@ -7,7 +7,7 @@ import re
 from datetime import datetime
 
 import pytest
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 from rosbags.typesys import Stores, get_typestore
 
@@ -120,6 +120,7 @@ def test_repr_and_str_as_rclpy() -> None:
     assert repr(Time(nanoseconds=7)) == "Time(nanoseconds=7)"
 
 
+@settings(deadline=None)  # a loaded machine must not fail a correct test
 @given(times_ns)
 def test_time_message_round_trip(ns: int) -> None:
     t = Time(nanoseconds=ns)
@@ -130,6 +131,7 @@ def test_time_message_round_trip(ns: int) -> None:
     assert to_nanoseconds(msg) == ns == to_nanoseconds(t)
 
 
+@settings(deadline=None)
 @given(durations_ns)
 def test_duration_message_round_trip(ns: int) -> None:
     d = Duration(nanoseconds=ns)
