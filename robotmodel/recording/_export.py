@@ -9,6 +9,7 @@ and a stamp the buffer cannot answer (a gap across a parent change) is left out.
 
 from __future__ import annotations
 
+import importlib
 import io
 import os
 from pathlib import Path
@@ -123,8 +124,9 @@ def write_poses(series: PoseSeries, path: str | os.PathLike[str]) -> Path:
     try:
         if out.suffix == ".parquet":
             try:
-                import pyarrow as pa
-                import pyarrow.parquet as pq
+                # Optional (the "parquet" extra): imported by name so that the package works without it.
+                pa = importlib.import_module("pyarrow")
+                pq = importlib.import_module("pyarrow.parquet")
             except ImportError:
                 raise RecordingError(f"{out}: writing Parquet needs pyarrow (pip install pyarrow); "
                                      "use a .csv name") from None
