@@ -95,9 +95,10 @@ def quat_canonical(q: Quat) -> Quat:
     """
     x, y, z, w = q
     n2 = x * x + y * y + z * z + w * w
-    if not n2 > 0.0 or math.isinf(n2):
+    s = 2.0 / n2 if n2 > 0.0 else math.inf
+    if math.isinf(s) or math.isinf(n2) or math.isnan(n2):
+        # tf2's matrix then holds inf - inf: its round trip gives NaN.
         return (math.nan, math.nan, math.nan, math.nan)
-    s = 2.0 / n2
     xx, yy, zz = x * (x * s), y * (y * s), z * (z * s)
     m00, m11, m22 = 1.0 - (yy + zz), 1.0 - (xx + zz), 1.0 - (xx + yy)
     if m00 + m11 + m22 > 0.0:

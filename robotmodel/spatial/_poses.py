@@ -138,7 +138,7 @@ def quats_canonical(q: npt.ArrayLike) -> F:
         out = np.empty((4, *quats.shape[:-1]))
         for k, c in enumerate((x, y, z, w)):
             np.multiply(c, inv, out=out[k])
-        bad = ~((n2 > 0.0) & np.isfinite(n2))
+        bad = ~((n2 > 0.0) & np.isfinite(n2) & np.isfinite(s))
         if bad.any():
             out[:, bad] = np.nan
     return np.moveaxis(out, 0, -1)

@@ -170,6 +170,9 @@ def test_canonical_quaternion_examples_from_tf2() -> None:
     assert c == pytest.approx((0.0, 0.0, 0.9238795, -0.3826834), abs=1e-7)
     assert quat_canonical((0.0, 0.0, 0.0, -2.0)) == (0.0, 0.0, 0.0, 1.0)
     assert all(math.isnan(v) for v in quat_canonical((0.0, 0.0, 0.0, 0.0)))
+    # |q|² so small that tf2's 2/|q|² overflows: its matrix holds inf - inf, the result is NaN.
+    assert all(math.isnan(v) for v in quat_canonical((1e-160, 0.0, 0.0, 0.0)))
+    assert quat_canonical((1e-150, 0.0, 0.0, 0.0)) == (1.0, 0.0, 0.0, 0.0)
     assert np.isnan(quats_canonical([[0.0, 0.0, 0.0, 0.0], [math.inf, 0, 0, 1]])).all()
 
 
