@@ -7,6 +7,16 @@ import sysconfig
 from pathlib import Path
 
 import pytest
+from hypothesis import HealthCheck, settings
+
+# Property tests run on a loaded 2-core machine beside live process tests: no per-example
+# deadline and no too-slow health check (both measure the machine, not the code), and in CI
+# the examples are derived from the test, so a run is repeatable.
+settings.register_profile(
+    "robotmodel", deadline=None, suppress_health_check=[HealthCheck.too_slow],
+    derandomize=bool(os.environ.get("CI")), print_blob=True,
+)
+settings.load_profile("robotmodel")
 
 REPO = Path(__file__).resolve().parents[1]
 # Real robot packages for the corpus tests: $ROBOTMODEL_CORPUS, else shared/corpus beside the
