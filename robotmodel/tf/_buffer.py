@@ -285,6 +285,8 @@ class Buffer(BufferCore):
         Returns translations ``(N, 3)`` and quaternions ``(N, 4)`` (x, y, z, w), with the same
         semantics and errors as N calls of :meth:`lookup_transform`.
         """
+        if isinstance(times, np.ndarray) and times.size < 4 and times.dtype.kind == "i":
+            times = times.reshape(-1).tolist()
         if isinstance(times, list) and len(times) < 4 and all(type(t) is int for t in times):
             # A few stamps: scalar lookups, without NumPy's per-call cost (same checks and errors).
             poses = [self.lookup_ns(target_frame, source_frame, t)[0] for t in times]
