@@ -20,13 +20,14 @@ class Progress:
     second) never draw anything.
     """
 
-    def __init__(self, label: str, total: int, enabled: bool | None = None, stream: TextIO | None = None) -> None:
+    def __init__(self, label: str, total: int, enabled: bool | None = None, stream: TextIO | None = None,
+                 delay_s: float = _DELAY_S) -> None:
         self.stream = stream if stream is not None else sys.stderr
         self.enabled = self.stream.isatty() if enabled is None else enabled
         self.label = label
         self.total = max(total, 1)
         self._start = time.monotonic()
-        self._next = self._start + _DELAY_S
+        self._next = self._start + delay_s
         self._drawn = False
 
     def update(self, done: int, transforms: int) -> None:
