@@ -1,4 +1,4 @@
-"""The install layout: every library subpackage is listed, cli/ and urdf/ map into robotmodel."""
+"""The install layout: every library subpackage is listed, cli/, urdf/ and examples/ map into robotmodel."""
 
 from __future__ import annotations
 
@@ -29,7 +29,8 @@ def test_every_library_subpackage_is_listed() -> None:
 
 def test_cli_and_models_install_under_robotmodel() -> None:
     mapping = _config()["package-dir"]
-    assert mapping == {"robotmodel": "robotmodel", "robotmodel.cli": "cli", "robotmodel.robots": "urdf"}
+    assert mapping == {"robotmodel": "robotmodel", "robotmodel.cli": "cli", "robotmodel.robots": "urdf",
+                       "robotmodel.examples": "examples"}
     import robotmodel.cli.main
     import robotmodel.robots
 
