@@ -166,7 +166,10 @@
   });
   document.getElementById("randomize").addEventListener("click", () => {
     const positions = {};
-    for (const joint of state.config.joints) positions[joint.name] = joint.min + Math.random() * (joint.max - joint.min);
+    for (const joint of state.config.joints) {
+      const value = joint.min + Math.random() * (joint.max - joint.min);
+      positions[joint.name] = toValue(joint, toStep(joint, value));  // what the slider can show
+    }
     setPositions(positions);
     publish();
   });
