@@ -8,6 +8,7 @@ import time
 from types import TracebackType
 from typing import TYPE_CHECKING, Any
 
+from robotmodel.errors import TransformException
 from robotmodel.msgs import TFMessage, decode_tf_records
 from robotmodel.tf_ros._authority import PublisherNames
 from robotmodel.tf_ros._node import OwnedNode
@@ -132,7 +133,13 @@ class TransformListener:
             (self.static_callback if is_static else self.callback)(data, who)
             return
         for rec in data:
-            insert(rec.parent, rec.child, rec.stamp_ns, rec.pose, who, is_static)
+            try:
+                insert(rec.parent, rec.child, rec.stamp_ns, rec.pose, who, is_static)
+            except TransformException as exc:
+                # As tf2_ros's listener: one bad transform (e.g. a negative stamp) is reported
+                # and the rest of the message still goes in.
+                self._warn(f"Failure to set received transform from {rec.child} to {rec.parent} "
+                           f"with error: {exc}")
 
     def _reattribute(self, gid: bytes, items: list[Any], name: str) -> None:
         with self._static_lock:
@@ -162,12 +169,19 @@ class TransformListener:
     def callback(self, data: TFMessage, authority: str = DEFAULT_AUTHORITY) -> None:
         """Insert the transforms of one ``/tf`` message."""
         for transform in data.transforms:
-            self.buffer.set_transform(transform, authority)
+            self._set(transform, authority, False)
 
     def static_callback(self, data: TFMessage, authority: str = DEFAULT_AUTHORITY) -> None:
         """Insert the transforms of one ``/tf_static`` message as static."""
         for transform in data.transforms:
-            self.buffer.set_transform_static(transform, authority)
+            self._set(transform, authority, True)
+
+    def _set(self, transform: Any, authority: str, is_static: bool) -> None:
+        try:
+            self.buffer.set_transform(transform, authority, is_static)
+        except TransformException as exc:
+            self._warn(f"Failure to set received transform from {transform.child_frame_id} to "
+                       f"{transform.header.frame_id} with error: {exc}")
 
     def unregister(self) -> None:
         """Withdraw both subscriptions (tf2_ros's name); the buffer keeps its data."""

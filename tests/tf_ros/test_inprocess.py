@@ -120,3 +120,19 @@ def test_static_sample_before_its_publisher_token_is_reattributed(domain):
         assert buffer.lookup_transform("world", "cam", Time()).transform.translation.x == 1.0
         token.close()
         raw_pub.close()
+
+
+def test_listener_reports_a_bad_stamp_and_keeps_the_rest_of_the_message(domain, caplog):
+    # A negative stamp is valid int32 on the wire but no valid tf2 time: tf2_ros's listener
+    # reports that transform and still inserts the others of the same message.
+    buffer = Buffer()
+    opts = {"backend": "inprocess", "domain_id": domain}
+    bad = make_transform("base", "bad", (1, 0, 0))
+    bad.header.stamp.sec = -5
+    good = make_transform("base", "good", (2, 0, 0), stamp_ns=1_000_000_000)
+    with TransformListener(buffer, **opts), TransformBroadcaster(**opts) as br:
+        br.send_transform([bad, good])
+        t = buffer.lookup_transform("base", "good", Time(), timeout=Duration(seconds=5))
+        assert t.transform.translation.x == 2.0
+        assert not buffer.can_transform("base", "bad", Time())
+    assert any("Failure to set received transform from bad to base" in r.getMessage() for r in caplog.records)
