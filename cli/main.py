@@ -43,6 +43,7 @@ COMMAND_MODULES: tuple[str, ...] = (
     "robotmodel.cli.view_cmd",
     "robotmodel.cli.topic_cmd",
     "robotmodel.cli.router_cmd",
+    "robotmodel.cli.launch_cmd",
 )
 
 

@@ -25,6 +25,8 @@ caller (and the CLI) can catch one class and print one line. The tree::
     ├── RecordingError              a recording that cannot be read (truncated, corrupt, empty,
     │                               wrong format, a topic of another type) or written; names
     │                               the file and what was read (see robotmodel.recording)
+    ├── LaunchError                 a launch file that cannot be run: bad XML, an unknown
+    │                               substitution, a missing include or arg (file:line first)
     └── TransformException          tf2's root (see robotmodel.tf)
         ├── LookupException
         ├── ConnectivityException
@@ -49,6 +51,7 @@ __all__ = [
     "InvalidArgumentException",
     "JointValueError",
     "KinematicsError",
+    "LaunchError",
     "LookupException",
     "MessageError",
     "PackageNotFoundError",
@@ -133,6 +136,10 @@ class ViewerError(RobotModelError):
 
 class RecordingError(RobotModelError):
     """A recording could not be read or written; the text names the file and what was read before."""
+
+
+class LaunchError(RobotModelError):
+    """A launch file cannot be run; the text starts with ``FILE:LINE:`` of the element at fault."""
 
 
 class BusError(RobotModelError):

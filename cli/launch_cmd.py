@@ -1,0 +1,73 @@
+"""``robotmodel launch FILE | PKG FILE [name:=value ...]``: ROS 1 / ROS 2 XML launch files, without ROS.
+
+The nodes this project provides run as processes on the bus (robot/joint state publishers,
+the sliders, static transforms, the viewer for rviz); any other node is listed as skipped.
+See :mod:`robotmodel.launch` for what is read.
+"""
+
+from __future__ import annotations
+
+import argparse
+import shlex
+import sys
+from typing import Any
+
+from robotmodel.cli._common import add_mapping_arguments
+
+
+def register(sub: Any) -> None:
+    """Add the ``launch`` subcommand (alias ``roslaunch``)."""
+    parser: argparse.ArgumentParser = sub.add_parser(
+        "launch", aliases=["roslaunch"],
+        help="run a ROS 1 or ROS 2 XML launch file's description nodes (roslaunch / ros2 launch)",
+        description="Read a ROS 1 (.launch) or ROS 2 (.launch.xml) XML launch file and start the nodes "
+        "robotmodel provides as processes on the bus: robot_state_publisher, joint_state_publisher(_gui), "
+        "static_transform_publisher (tf or tf2_ros), and the viewer for rviz/rviz2. Other nodes are listed "
+        "as skipped. Ctrl-C or SIGTERM stop every process.",
+    )
+    add_mapping_arguments(parser)
+    parser.add_argument("target", metavar="FILE|PKG", help="a launch file, or a package name followed by FILE")
+    parser.add_argument("file", metavar="FILE", nargs="?", help="the launch file's name inside package PKG")
+    parser.add_argument("--dry-run", action="store_true",
+                        help="print the processes that would start (and the skipped nodes), start nothing")
+    parser.add_argument("--no-browser", action="store_true",
+                        help="serve the viewer pages without opening a browser")
+    parser.add_argument("--package-path", action="append", default=[], metavar="DIR",
+                        help="search DIR first for ROS packages ($(find pkg), PKG); repeatable")
+    parser.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    """Read the file, print the plan, then run it (unless --dry-run)."""
+    import shutil
+    import tempfile
+    from pathlib import Path
+
+    from robotmodel.errors import LaunchError
+    from robotmodel.launch import build_plan, find_launch_file, load_launch_file, run_processes
+
+    paths = [Path(p).resolve() for p in args.package_path]
+    if args.file is None:
+        path = Path(args.target)
+        if not path.is_file():
+            raise LaunchError(f"{path}: no such launch file")
+    else:
+        path = find_launch_file(args.target, args.file, paths)
+    launch = load_launch_file(path, args.mappings, paths)
+    workdir = Path(tempfile.mkdtemp(prefix="robotmodel-launch-"))
+    try:
+        plan = build_plan(launch, workdir, package_paths=paths, browser=not args.no_browser)
+        for note in plan.notes:
+            print(f"note: {note}", file=sys.stderr)
+        for line in plan.skipped:
+            print(f"skipped: {line}", flush=True)
+        if args.dry_run:
+            for spec in plan.processes:
+                print(f"{spec.name}: robotmodel {shlex.join(spec.argv)}")
+            return 0
+        if not plan.processes:
+            print("nothing to start", file=sys.stderr)
+            return 0
+        return run_processes(plan.processes)
+    finally:
+        shutil.rmtree(workdir, ignore_errors=True)

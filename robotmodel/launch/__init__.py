@@ -1,0 +1,35 @@
+"""ROS launch files without ROS: the description-package subset of ROS 1 and ROS 2 launch XML.
+
+- :func:`load_launch_file`: read a file (either dialect) with ``name:=value`` arguments into
+  its nodes and parameters (:class:`LaunchFile`); ``$(arg)``, ``$(var)``, ``$(find)``,
+  ``$(find-pkg-share)``, ``$(eval)`` (a safe subset), ``$(env)``/``$(optenv)``,
+  ``$(dirname)`` and xacro's ``$(command)`` are resolved, includes and groups followed.
+- :func:`build_plan`: the ``robotmodel`` commands standing in for those nodes
+  (:class:`LaunchPlan` of :class:`ProcessSpec`), other nodes listed as skipped.
+- :func:`run_processes`: start them, stop them together on SIGINT/SIGTERM, reap them all.
+- :func:`find_launch_file`: ``PKG FILE`` to a path, as ``roslaunch``/``ros2 launch`` do.
+
+Bad input raises :class:`robotmodel.errors.LaunchError` starting with ``FILE:LINE:``.
+"""
+
+from __future__ import annotations
+
+from robotmodel.launch._find import find_launch_file
+from robotmodel.launch._kinds import build_plan
+from robotmodel.launch._loader import LaunchFile, load_launch_file
+from robotmodel.launch._model import Dialect, LaunchPlan, NodeDecl, Param, ProcessSpec, XacroSource
+from robotmodel.launch._supervisor import run_processes
+
+__all__ = [
+    "Dialect",
+    "LaunchFile",
+    "LaunchPlan",
+    "NodeDecl",
+    "Param",
+    "ProcessSpec",
+    "XacroSource",
+    "build_plan",
+    "find_launch_file",
+    "load_launch_file",
+    "run_processes",
+]

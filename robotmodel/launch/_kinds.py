@@ -1,0 +1,194 @@
+"""Which ``robotmodel`` command stands in for each kind of node, with its parameters mapped.
+
+| node (pkg / executable)                                  | command                        |
+|----------------------------------------------------------|--------------------------------|
+| robot_state_publisher / robot_state_publisher, state_publisher | ``robot-state-publisher FILE`` |
+| joint_state_publisher / joint_state_publisher            | ``joint-state-publisher [FILE]`` (``use_gui``: the GUI) |
+| joint_state_publisher_gui / joint_state_publisher_gui    | ``joint-state-publisher-gui [FILE]`` |
+| tf or tf2_ros / static_transform_publisher               | ``static-transform-publisher ARGS`` |
+| rviz / rviz, rviz2 / rviz2                               | ``view --follow`` (robot from /robot_description) |
+
+Any other node is skipped with one line. ``robot_description`` is the node's own
+parameter, else (ROS 1) the nearest one up its namespace, as ``searchParam`` finds it; a
+xacro command becomes ``FILE name:=value ...`` so the command expands it itself.
+"""
+
+from __future__ import annotations
+
+import shlex
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+
+import yaml
+
+from robotmodel.errors import LaunchError
+from robotmodel.launch._loader import LaunchFile, join_ns
+from robotmodel.launch._model import LaunchPlan, NodeDecl, Param, ProcessSpec
+
+__all__ = ["build_plan"]
+
+_RSP = {("robot_state_publisher", "robot_state_publisher"), ("robot_state_publisher", "state_publisher")}
+_JSP = {("joint_state_publisher", "joint_state_publisher")}
+_JSP_GUI = {("joint_state_publisher_gui", "joint_state_publisher_gui")}
+_STATIC = {("tf", "static_transform_publisher"), ("tf2_ros", "static_transform_publisher")}
+_RVIZ = {("rviz", "rviz"), ("rviz2", "rviz2")}
+
+
+def build_plan(launch: LaunchFile, workdir: Path, *, package_paths: Sequence[Path] = (),
+               browser: bool = True) -> LaunchPlan:
+    """Map the declared nodes to processes; a literal robot_description is written into ``workdir``."""
+    plan = LaunchPlan(skipped=list(launch.skipped), notes=list(launch.notes))
+    mapper = _Mapper(launch.params, workdir, package_paths, browser)
+    for node in launch.nodes:
+        key = (node.pkg, node.executable)
+        label = f"{node.full_name} ({node.pkg}/{node.executable})"
+        if key in _RSP | _JSP | _JSP_GUI | _STATIC | _RVIZ:
+            spec = mapper.map(node, key)
+            if isinstance(spec, str):
+                plan.skipped.append(f"{label}: {spec}")
+                continue
+            plan.processes.append(spec)
+            if node.namespace != "/" and key not in _RVIZ:
+                plan.notes.append(f"{node.full_name}: namespace {node.namespace} not applied to topics "
+                                  "(robotmodel's commands use the global /tf, /joint_states and /robot_description)")
+        else:
+            plan.skipped.append(f"{label}: no robotmodel equivalent, not started")
+    return plan
+
+
+class _Mapper:
+    def __init__(self, params: Mapping[str, Param], workdir: Path, package_paths: Sequence[Path],
+                 browser: bool) -> None:
+        self.params = params
+        self.workdir = workdir
+        self.package_paths = list(package_paths)
+        self.browser = browser
+        self.written = 0
+
+    def map(self, node: NodeDecl, key: tuple[str, str]) -> ProcessSpec | str:
+        if key in _STATIC:
+            return ProcessSpec(node.full_name, "static_transform_publisher",
+                               ("static-transform-publisher", *_split(node)), node.required)
+        if key in _RVIZ:
+            return ProcessSpec(node.full_name, "rviz", ("view", "--follow", *self._paths(), *self._page()),
+                               node.required)
+        description = self._description(node)
+        if key in _RSP:
+            if not description:
+                return "no robot_description parameter for it"
+            return ProcessSpec(node.full_name, "robot_state_publisher",
+                               ("robot-state-publisher", *description, *self._paths(), *_rsp_options(node)),
+                               node.required)
+        if key in _JSP and not _flag(node, "use_gui"):
+            return ProcessSpec(node.full_name, "joint_state_publisher",
+                               ("joint-state-publisher", *description, *self._paths(), *_jsp_options(node)),
+                               node.required)
+        joints = [f"--joint={name}={value}" for name, value in _zeros(node)]
+        return ProcessSpec(node.full_name, "joint_state_publisher_gui",
+                           ("joint-state-publisher-gui", *description, *self._paths(), *joints, *self._page()),
+                           node.required)
+
+    def _page(self) -> tuple[str, ...]:
+        # No --port: each page binds the first free port from 7000 up, so pages never race for one.
+        return ("--open",) if self.browser else ()
+
+    def _paths(self) -> tuple[str, ...]:
+        return tuple(w for p in self.package_paths for w in ("--package-path", str(p)))
+
+    def _description(self, node: NodeDecl) -> tuple[str, ...]:
+        param = node.params.get("robot_description")
+        if param is None:
+            # ROS 1 searchParam: the node's namespace, then each parent up to the root.
+            ns = node.namespace
+            while param is None:
+                param = self.params.get(join_ns(ns, "robot_description"))
+                if ns == "/":
+                    break
+                ns = ns.rsplit("/", 1)[0] or "/"
+        if param is None:
+            # ROS 2's joint_state_publisher takes the URDF as its first argument.
+            words = _split(node)
+            if node.pkg == "joint_state_publisher" and words and not words[0].startswith("-"):
+                return (str(Path(words[0]).resolve()),)
+            return ()
+        if param.xacro is not None:
+            return (str(param.xacro.file), *(f"{k}:={v}" for k, v in param.xacro.mappings))
+        if param.textfile is not None:
+            return (str(param.textfile),)
+        self.written += 1
+        path = self.workdir / f"robot_description_{self.written}.urdf"
+        path.write_text(param.value or "", encoding="utf-8")
+        return (str(path),)
+
+
+def _split(node: NodeDecl) -> list[str]:
+    try:
+        return shlex.split(node.args)
+    except ValueError as exc:
+        raise LaunchError(f"{node.file}:{node.line}: args=\"{node.args}\": {exc}") from None
+
+
+def _value(node: NodeDecl, name: str) -> object:
+    param = node.params.get(name)
+    if param is None or param.value is None:
+        return None
+    try:
+        return yaml.safe_load(param.value)
+    except yaml.YAMLError:
+        return param.value
+
+
+def _flag(node: NodeDecl, name: str) -> bool:
+    value = _value(node, name)
+    return value is True or (isinstance(value, str) and value.lower() == "true") or value == 1
+
+
+def _number(node: NodeDecl, name: str) -> str | None:
+    value = _value(node, name)
+    if value is None:
+        return None
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        param = node.params[name]
+        raise LaunchError(f"{param.file}:{param.line}: parameter '{name}' of {node.full_name} must be a number, "
+                          f"got '{param.value}'")
+    return str(value)
+
+
+def _rsp_options(node: NodeDecl) -> list[str]:
+    out: list[str] = []
+    freq = _number(node, "publish_frequency")
+    if freq is not None:
+        out += ["--publish-frequency", freq]
+    prefix = _value(node, "frame_prefix")
+    if prefix:
+        out += ["--frame-prefix", str(prefix)]
+    if _flag(node, "ignore_timestamp"):
+        out.append("--ignore-timestamp")
+    return out
+
+
+def _zeros(node: NodeDecl) -> list[tuple[str, str]]:
+    found: dict[str, str] = {}
+    whole = _value(node, "zeros")
+    if isinstance(whole, dict):
+        found.update({str(k): str(v) for k, v in whole.items()})
+    for name in node.params:
+        if name.startswith("zeros."):
+            found[name.removeprefix("zeros.")] = str(_number(node, name))
+    return sorted(found.items())
+
+
+def _jsp_options(node: NodeDecl) -> list[str]:
+    out: list[str] = []
+    rate = _number(node, "rate")
+    if rate is not None:
+        out += ["--rate", rate]
+    zeros = _zeros(node)
+    if zeros:
+        out += ["--zeros", *(f"{k}={v}" for k, v in zeros)]
+    sources = _value(node, "source_list")
+    if isinstance(sources, str):
+        sources = [sources]
+    if isinstance(sources, list) and sources:
+        out += ["--source-list", *(str(s) for s in sources)]
+    return out

@@ -1,0 +1,325 @@
+"""Reading launch files (ROS 1 roslaunch XML and ROS 2 launch XML) into nodes and parameters.
+
+Scoping follows each system:
+
+- ROS 1: args belong to one file (a ``<group>`` does not scope them); an ``<include>``
+  sees only the args passed to it (all of them with ``pass_all_args``), an arg declared
+  with ``value`` cannot be set from outside, and an arg passed to an include that does
+  not declare it is an error. Parameters outside nodes are global, under the group's
+  ``ns``; a node finds ``robot_description`` by searching up from its namespace.
+- ROS 2: ``<arg>`` and ``<let>`` set launch configurations; a ``<group>`` scopes them
+  (unless ``scoped="false"``), an ``<include>`` does not, so its arguments stay set after
+  it, as upstream does. Namespaces come from ``<push-ros-namespace>`` and the node's
+  ``namespace``. Parameters belong to nodes.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+import yaml
+
+from robotmodel.errors import LaunchError
+from robotmodel.launch._model import Dialect, NodeDecl, Param
+from robotmodel.launch._subst import Sub, SubstContext, parse, parse_xacro_command, resolve, resolve_parts, truth
+from robotmodel.launch._xml import Element, parse_file, where
+
+__all__ = ["LaunchFile", "detect_dialect", "join_ns", "load_launch_file"]
+
+_MAX_DEPTH = 32
+_IGNORED = frozenset({
+    "remap", "env", "machine", "set_env", "unset_env", "set_parameter", "set_remap", "set-env", "unset-env",
+    "set-parameter", "set-remap", "log", "timer",
+})
+_ROS2_TAGS = frozenset({"let", "push-ros-namespace", "push_ros_namespace", "executable", "set_env", "set-env"})
+
+
+@dataclass
+class LaunchFile:
+    """Everything a launch file declares: its nodes in order, ROS 1 global parameters, skips and notes."""
+
+    nodes: list[NodeDecl]
+    params: dict[str, Param]
+    skipped: list[str]
+    notes: list[str]
+
+
+@dataclass
+class _Scope:
+    path: Path
+    dialect: Dialect
+    args: dict[str, str | None]
+    passed: dict[str, str]
+    declared: set[str]
+    ns: str
+    depth: int
+
+
+def join_ns(base: str, name: str) -> str:
+    """``name`` under namespace ``base`` (absolute names kept); always absolute, no trailing '/'."""
+    full = name if name.startswith("/") else base.rstrip("/") + "/" + name
+    parts = [p for p in full.split("/") if p]
+    return "/" + "/".join(parts)
+
+
+def detect_dialect(path: Path, root: Element) -> Dialect:
+    """ROS 2 for ``*.launch.xml`` or a file using ROS 2-only tags, ``exec=`` or ``$(var``; else ROS 1."""
+    if path.name.endswith(".launch.xml"):
+        return Dialect.ROS2
+    if path.name.endswith(".launch"):
+        return Dialect.ROS1
+    stack = [root]
+    while stack:
+        elem = stack.pop()
+        if elem.tag in _ROS2_TAGS or (elem.tag == "node" and "exec" in elem.attrib):
+            return Dialect.ROS2
+        if any("$(var " in v or "$(find-pkg-share " in v for v in elem.attrib.values()):
+            return Dialect.ROS2
+        stack.extend(elem.children)
+    return Dialect.ROS1
+
+
+def load_launch_file(path: Path, args: Mapping[str, str], package_paths: Sequence[Path] = ()) -> LaunchFile:
+    """Read ``path`` with command-line ``args``; raises LaunchError (``FILE:LINE: ...``) on bad input."""
+    loader = _Loader(package_paths)
+    loader.load_top(path.resolve(), dict(args))
+    return LaunchFile(loader.nodes, loader.params, loader.skipped, loader.notes)
+
+
+class _Loader:
+    def __init__(self, package_paths: Sequence[Path]) -> None:
+        self.package_paths = list(package_paths)
+        self.nodes: list[NodeDecl] = []
+        self.params: dict[str, Param] = {}
+        self.skipped: list[str] = []
+        self.notes: list[str] = []
+
+    def load_top(self, path: Path, args: dict[str, str]) -> None:
+        root = parse_file(path)
+        dialect = detect_dialect(path, root)
+        configs: dict[str, str | None] = dict(args) if dialect is Dialect.ROS2 else {}
+        self._walk(root.children, _Scope(path, dialect, configs, dict(args), set(), "/", 0))
+
+    # -- helpers -----------------------------------------------------------------
+    def _ctx(self, scope: _Scope, elem: Element) -> SubstContext:
+        return SubstContext(scope.path, elem.line, scope.dialect, scope.args, self.package_paths)
+
+    def _attr(self, scope: _Scope, elem: Element, name: str, *, required: bool = False) -> str | None:
+        raw = elem.attrib.get(name)
+        if raw is None:
+            if required:
+                raise LaunchError(f"{where(scope.path, elem.line)}: <{elem.tag}> needs a '{name}' attribute")
+            return None
+        return resolve(raw, self._ctx(scope, elem))
+
+    def _req(self, scope: _Scope, elem: Element, name: str) -> str:
+        value = self._attr(scope, elem, name, required=True)
+        assert value is not None
+        return value
+
+    def _enabled(self, scope: _Scope, elem: Element) -> bool:
+        ctx = self._ctx(scope, elem)
+        cond_if, cond_unless = self._attr(scope, elem, "if"), self._attr(scope, elem, "unless")
+        if cond_if is not None and cond_unless is not None and scope.dialect is Dialect.ROS1:
+            raise ctx.error(f"<{elem.tag}> cannot set both 'if' and 'unless'")
+        if cond_if is not None and not truth(cond_if, ctx, "if"):
+            return False
+        return not (cond_unless is not None and truth(cond_unless, ctx, "unless"))
+
+    # -- walking -----------------------------------------------------------------
+    def _walk(self, elems: list[Element], scope: _Scope) -> None:
+        for elem in elems:
+            if not self._enabled(scope, elem):
+                continue
+            tag = elem.tag
+            if tag == "arg":
+                self._arg(scope, elem)
+            elif tag == "let":
+                scope.args[self._req(scope, elem, "name")] = self._req(scope, elem, "value")
+            elif tag == "include":
+                self._include(scope, elem)
+            elif tag == "group":
+                self._group(scope, elem)
+            elif tag in ("push-ros-namespace", "push_ros_namespace"):
+                scope.ns = join_ns(scope.ns, self._req(scope, elem, "namespace"))
+            elif tag == "node":
+                self._node(scope, elem)
+            elif tag == "param":
+                self._global_param(scope, elem, scope.ns)
+            elif tag == "rosparam":
+                for p in self._rosparam(scope, elem):
+                    self.params[join_ns(scope.ns, p.name)] = p
+            elif tag in ("executable", "test"):
+                shown = self._attr(scope, elem, "cmd") or self._attr(scope, elem, "type") or ""
+                self.skipped.append(f"<{tag}> {shown} ({where(scope.path, elem.line)}): not run")
+            elif tag in _IGNORED:
+                self.notes.append(f"{where(scope.path, elem.line)}: <{tag}> ignored")
+            else:
+                self.notes.append(f"{where(scope.path, elem.line)}: unknown tag <{tag}> ignored")
+
+    def _arg(self, scope: _Scope, elem: Element) -> None:
+        name = self._req(scope, elem, "name")
+        ctx = self._ctx(scope, elem)
+        value, default = self._attr(scope, elem, "value"), self._attr(scope, elem, "default")
+        if scope.dialect is Dialect.ROS2:
+            if value is not None:
+                scope.args[name] = value
+            elif name not in scope.args or scope.args[name] is None:
+                if default is None:
+                    given = ", ".join(sorted(scope.args))
+                    desc = elem.attrib.get("description", "no description given")
+                    raise ctx.error(f"missing required argument '{name}' (description: '{desc}'), given: [{given}]")
+                scope.args[name] = default
+            return
+        if name in scope.declared:
+            raise ctx.error(f"arg '{name}' has already been declared")
+        scope.declared.add(name)
+        if value is not None:
+            if name in scope.passed:
+                raise ctx.error(f"cannot override arg '{name}', which has already been set")
+            scope.args[name] = value
+        elif default is not None:
+            scope.args[name] = scope.passed.get(name, default)
+        else:
+            scope.args[name] = scope.passed.get(name)
+
+    def _include(self, scope: _Scope, elem: Element) -> None:
+        ctx = self._ctx(scope, elem)
+        if scope.depth >= _MAX_DEPTH:
+            raise ctx.error(f"includes nested deeper than {_MAX_DEPTH} (an include cycle?)")
+        text = self._req(scope, elem, "file")
+        path = Path(text)
+        if not path.is_absolute():
+            beside = scope.path.parent / path
+            path = beside if beside.exists() else Path.cwd() / path
+        if not path.is_file():
+            raise ctx.error(f"<include>: launch file not found: {path}")
+        if path.suffix in (".py", ".yaml", ".yml"):
+            self.skipped.append(f"<include> {path} ({where(scope.path, elem.line)}): only XML launch files are read")
+            return
+        given: dict[str, str] = {}
+        for child in elem.children:
+            if child.tag == "arg" and self._enabled(scope, child):
+                value = self._attr(scope, child, "value")
+                if value is None:
+                    value = self._attr(scope, child, "default", required=True)
+                assert value is not None
+                given[self._req(scope, child, "name")] = value
+        root = parse_file(path)
+        dialect = detect_dialect(path, root)
+        ns = join_ns(scope.ns, self._attr(scope, elem, "ns") or "")
+        if dialect is Dialect.ROS2:
+            configs = scope.args if scope.dialect is Dialect.ROS2 else {}
+            configs.update(given)
+            self._walk(root.children, _Scope(path, dialect, configs, given, set(), ns, scope.depth + 1))
+            return
+        passed = {}
+        pass_all = self._attr(scope, elem, "pass_all_args")
+        if pass_all is not None and truth(pass_all, ctx, "pass_all_args"):
+            passed = {k: v for k, v in scope.args.items() if v is not None}
+        passed.update(given)
+        inner = _Scope(path, dialect, {}, passed, set(), ns, scope.depth + 1)
+        self._walk(root.children, inner)
+        unused = sorted(set(given) - inner.declared)
+        if unused:
+            raise ctx.error(f"unused args [{', '.join(unused)}] for include of [{path}]")
+
+    def _group(self, scope: _Scope, elem: Element) -> None:
+        ns = join_ns(scope.ns, self._attr(scope, elem, "ns") or "")
+        inner = replace(scope, ns=ns)
+        if scope.dialect is Dialect.ROS2:
+            scoped = self._attr(scope, elem, "scoped")
+            if scoped is None or truth(scoped, self._ctx(scope, elem), "scoped"):
+                inner.args = dict(scope.args)
+        self._walk(elem.children, inner)
+
+    # -- parameters ----------------------------------------------------------------
+    def _param(self, scope: _Scope, elem: Element, prefix: str = "") -> list[Param]:
+        name = prefix + self._req(scope, elem, "name")
+        ctx = self._ctx(scope, elem)
+        if elem.children and scope.dialect is Dialect.ROS2:
+            out: list[Param] = []
+            for child in elem.children:
+                if child.tag == "param" and self._enabled(scope, child):
+                    out.extend(self._param(scope, child, name + "."))
+            return out
+        raw_value = elem.attrib.get("value")
+        if raw_value is not None:
+            parts = parse(raw_value, ctx)
+            if len(parts) == 1 and isinstance(parts[0], Sub) and parts[0].name == "command" and parts[0].args:
+                command = resolve_parts(parts[0].args[0], ctx)
+                return [Param(name, xacro=parse_xacro_command(command, ctx), file=scope.path, line=elem.line)]
+            return [Param(name, value=resolve_parts(parts, ctx), file=scope.path, line=elem.line)]
+        textfile = self._attr(scope, elem, "textfile")
+        if textfile is not None:
+            path = Path(textfile)
+            if not path.is_file():
+                raise ctx.error(f"<param name=\"{name}\">: textfile not found: {path}")
+            return [Param(name, textfile=path.resolve(), file=scope.path, line=elem.line)]
+        command_text = self._attr(scope, elem, "command")
+        if command_text is not None:
+            return [Param(name, xacro=parse_xacro_command(command_text, ctx), file=scope.path, line=elem.line)]
+        if "from" in elem.attrib or "binfile" in elem.attrib:
+            self.notes.append(f"{where(scope.path, elem.line)}: <param name=\"{name}\"> from a file ignored")
+            return []
+        raise ctx.error(f"<param name=\"{name}\"> needs value, textfile or command")
+
+    def _global_param(self, scope: _Scope, elem: Element, ns: str) -> None:
+        if scope.dialect is Dialect.ROS2:
+            self.notes.append(f"{where(scope.path, elem.line)}: <param> outside a node ignored (ROS 2)")
+            return
+        for p in self._param(scope, elem):
+            self.params[join_ns(ns, p.name)] = p
+
+    def _rosparam(self, scope: _Scope, elem: Element) -> list[Param]:
+        ctx = self._ctx(scope, elem)
+        command = self._attr(scope, elem, "command") or "load"
+        if command != "load" or "file" in elem.attrib:
+            self.notes.append(f"{where(scope.path, elem.line)}: <rosparam command=\"{command}\"> ignored")
+            return []
+        try:
+            data = yaml.safe_load(resolve(elem.text, ctx)) if elem.text.strip() else None
+        except yaml.YAMLError as exc:
+            raise ctx.error(f"<rosparam>: invalid YAML: {' '.join(str(exc).splitlines())}") from None
+        base = join_ns(self._attr(scope, elem, "ns") or "", self._attr(scope, elem, "param") or "").lstrip("/")
+        out: list[Param] = []
+
+        def flatten(prefix: str, value: object) -> None:
+            if isinstance(value, dict) and value:
+                for key, item in value.items():
+                    flatten(f"{prefix}/{key}" if prefix else str(key), item)
+            elif prefix:
+                out.append(Param(prefix.replace("/", "."), value=yaml.safe_dump(value, default_flow_style=True)
+                                 .strip().removesuffix("...").strip(), file=scope.path, line=elem.line))
+
+        flatten(base, data)
+        return out
+
+    # -- nodes ---------------------------------------------------------------------
+    def _node(self, scope: _Scope, elem: Element) -> None:
+        pkg = self._req(scope, elem, "pkg")
+        exe_attr = "exec" if scope.dialect is Dialect.ROS2 else "type"
+        executable = self._attr(scope, elem, exe_attr) or self._attr(scope, elem, "type" if exe_attr == "exec"
+                                                                     else "exec")
+        if executable is None:
+            raise LaunchError(f"{where(scope.path, elem.line)}: <node> needs a '{exe_attr}' attribute")
+        name = self._attr(scope, elem, "name") or executable.rsplit("/", 1)[-1].removesuffix(".py")
+        ns_attr = self._attr(scope, elem, "namespace") or self._attr(scope, elem, "ns") or ""
+        params: dict[str, Param] = {}
+        for child in elem.children:
+            if not self._enabled(scope, child):
+                continue
+            if child.tag == "param":
+                for p in self._param(scope, child):
+                    params[p.name.replace("/", ".")] = p
+            elif child.tag == "rosparam":
+                for p in self._rosparam(scope, child):
+                    params[p.name] = p
+        required = self._attr(scope, elem, "required") or "false"
+        self.nodes.append(NodeDecl(
+            pkg=pkg, executable=executable, name=name, namespace=join_ns(scope.ns, ns_attr),
+            args=self._attr(scope, elem, "args") or "", params=params,
+            required=truth(required, self._ctx(scope, elem), "required"), file=scope.path, line=elem.line,
+        ))

@@ -1,0 +1,397 @@
+"""Substitutions in launch attributes: ``$(name arg ...)``, nested, for both dialects.
+
+ROS 1 (roslaunch): ``arg``, ``find``, ``env``, ``optenv``, ``anon``, ``dirname``, ``eval``.
+ROS 2 (launch frontends): ``var``, ``find-pkg-share``, ``find-pkg-prefix``, ``env``,
+``anon``, ``dirname``, ``filename``, ``eval``, ``command``, ``not``, ``and``, ``or``,
+``equals``. ``$(command ...)`` runs nothing but xacro, expanded in-process.
+
+ROS 2 groups an argument with spaces in single (or double) quotes; ROS 1 has no quoting,
+and ``optenv``'s default is the rest of the words. ``$(eval ...)`` takes its text raw up to
+the matching parenthesis: in ROS 1 launch args are its variables (and ``arg()``/``find()``
+... its functions), in ROS 2 the text is substituted first, then evaluated with math's names.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import math
+import os
+import shlex
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from robotmodel.errors import LaunchError, RobotModelError
+from robotmodel.launch._eval import EvalError, safe_eval
+from robotmodel.launch._model import Dialect, XacroSource
+
+__all__ = ["Sub", "SubstContext", "parse", "parse_xacro_command", "resolve", "resolve_parts", "truth"]
+
+
+@dataclass(frozen=True)
+class Sub:
+    """One ``$(name args)``: each argument a list of text and nested substitutions; ``raw`` for eval."""
+
+    name: str
+    args: tuple[tuple[str | Sub, ...], ...]
+    raw: str
+
+
+Parts = list["str | Sub"]
+
+
+@dataclass
+class SubstContext:
+    """What substitutions see: the file, the line being read, the dialect and the arguments in scope.
+
+    ``args`` maps names to values; None marks a ROS 1 arg declared without a value (an
+    error only when used).
+    """
+
+    path: Path
+    line: int
+    dialect: Dialect
+    args: Mapping[str, str | None]
+    package_paths: Sequence[Path]
+
+    def error(self, text: str) -> LaunchError:
+        """A LaunchError starting with this file and line."""
+        return LaunchError(f"{self.path}:{self.line}: {text}")
+
+
+def parse(text: str, ctx: SubstContext) -> Parts:
+    """Split ``text`` into literal text and substitutions; malformed syntax raises LaunchError."""
+    parts, pos = _parse_text(text, 0, ctx, top=True)
+    del pos
+    return parts
+
+
+def _parse_text(text: str, pos: int, ctx: SubstContext, *, top: bool) -> tuple[Parts, int]:
+    parts: Parts = []
+    buf: list[str] = []
+    while pos < len(text):
+        if text.startswith("$(", pos):
+            if buf:
+                parts.append("".join(buf))
+                buf = []
+            sub, pos = _parse_sub(text, pos, ctx)
+            parts.append(sub)
+            continue
+        if not top:
+            break
+        buf.append(text[pos])
+        pos += 1
+    if buf:
+        parts.append("".join(buf))
+    return parts, pos
+
+
+def _parse_sub(text: str, start: int, ctx: SubstContext) -> tuple[Sub, int]:
+    pos = start + 2
+    name_end = pos
+    while name_end < len(text) and not text[name_end].isspace() and text[name_end] != ")":
+        name_end += 1
+    name = text[pos:name_end]
+    if not name:
+        raise ctx.error(f"empty substitution in '{text}'")
+    raw_end = _matching_paren(text, name_end, ctx, text[start:])
+    raw = text[name_end:raw_end].strip()
+    if name == "eval":
+        return Sub(name, (), raw), raw_end + 1
+    args: list[tuple[str | Sub, ...]] = []
+    pos = name_end
+    quoting = ctx.dialect is Dialect.ROS2
+    while True:
+        while pos < raw_end and text[pos].isspace():
+            pos += 1
+        if pos >= raw_end:
+            break
+        arg: Parts = []
+        buf: list[str] = []
+        while pos < raw_end and not text[pos].isspace():
+            ch = text[pos]
+            if quoting and ch in "'\"":
+                close = text.find(ch, pos + 1, raw_end)
+                if close < 0:
+                    raise ctx.error(f"unterminated quote in '{text[start:raw_end + 1]}'")
+                inner = parse(text[pos + 1:close], ctx)
+                if buf:
+                    arg.append("".join(buf))
+                    buf = []
+                arg.extend(inner)
+                pos = close + 1
+            elif text.startswith("$(", pos):
+                if buf:
+                    arg.append("".join(buf))
+                    buf = []
+                sub, pos = _parse_sub(text, pos, ctx)
+                arg.append(sub)
+            else:
+                buf.append(ch)
+                pos += 1
+        if buf:
+            arg.append("".join(buf))
+        args.append(tuple(arg))
+    return Sub(name, tuple(args), raw), raw_end + 1
+
+
+def _matching_paren(text: str, pos: int, ctx: SubstContext, shown: str) -> int:
+    depth = 0
+    quote = ""
+    while pos < len(text):
+        ch = text[pos]
+        if quote:
+            if ch == quote:
+                quote = ""
+        elif ch in "'\"" and ctx.dialect is Dialect.ROS2:
+            quote = ch
+        elif ch == "(":
+            depth += 1
+        elif ch == ")":
+            if depth == 0:
+                return pos
+            depth -= 1
+        pos += 1
+    raise ctx.error(f"unterminated substitution '{shown}'")
+
+
+def resolve(text: str, ctx: SubstContext) -> str:
+    """``text`` with every substitution replaced by its value."""
+    return resolve_parts(parse(text, ctx), ctx)
+
+
+def resolve_parts(parts: Sequence[str | Sub], ctx: SubstContext) -> str:
+    """Join already parsed parts, resolving their substitutions."""
+    return "".join(p if isinstance(p, str) else _apply(p, ctx) for p in parts)
+
+
+def truth(value: str, ctx: SubstContext, attr: str) -> bool:
+    """A condition's value: true/1 or false/0 (any case); anything else is an error."""
+    word = value.strip().lower()
+    if word in ("true", "1"):
+        return True
+    if word in ("false", "0"):
+        return False
+    raise ctx.error(f"{attr}=\"{value}\": value must be true or false (or 1/0)")
+
+
+def _apply(sub: Sub, ctx: SubstContext) -> str:
+    table = _ROS1 if ctx.dialect is Dialect.ROS1 else _ROS2
+    handler = table.get(sub.name)
+    if handler is None:
+        valid = ", ".join(sorted(table))
+        shown = f"$({sub.name} {sub.raw})" if sub.raw else f"$({sub.name})"
+        raise ctx.error(f"Unknown substitution command [{shown}]. Valid commands are [{valid}]")
+    words = [resolve_parts(a, ctx) for a in sub.args]
+    try:
+        return handler(sub, words, ctx)
+    except LaunchError:
+        raise
+    except RobotModelError as exc:
+        raise ctx.error(f"$({sub.name} {sub.raw}): {' '.join(str(exc).splitlines())}") from None
+
+
+def _count(sub: Sub, words: list[str], ctx: SubstContext, low: int, high: int) -> None:
+    if not low <= len(words) <= high:
+        want = str(low) if low == high else f"{low} to {high}"
+        raise ctx.error(f"$({sub.name}) takes {want} argument(s), got {len(words)}: '$({sub.name} {sub.raw})'")
+
+
+def _arg(sub: Sub, words: list[str], ctx: SubstContext) -> str:
+    _count(sub, words, ctx, 1, 1)
+    return _lookup(words[0], ctx)
+
+
+def _lookup(name: str, ctx: SubstContext) -> str:
+    if name not in ctx.args:
+        if ctx.dialect is Dialect.ROS2:
+            raise ctx.error(f"launch configuration '{name}' does not exist")
+        raise ctx.error(f"arg '{name}' is not defined")
+    value = ctx.args[name]
+    if value is None:
+        raise ctx.error(f"arg '{name}' is not set")
+    return value
+
+
+def _find(sub: Sub, words: list[str], ctx: SubstContext) -> str:
+    from robotmodel.errors import PackageNotFoundError
+    from robotmodel.resources import find_package
+
+    _count(sub, words, ctx, 1, 1)
+    try:
+        return str(find_package(words[0], start=ctx.path, package_paths=ctx.package_paths))
+    except PackageNotFoundError:
+        if words[0] == "xacro":
+            # Only ever the folder of the xacro program, which runs in-process here.
+            return "[xacro]"
+        raise
+
+
+def _find_prefix(sub: Sub, words: list[str], ctx: SubstContext) -> str:
+    share = Path(_find(sub, words, ctx))
+    # An installed package's prefix is two levels above <prefix>/share/<pkg>; a source tree has none.
+    return str(share.parent.parent) if share.parent.name == "share" else str(share)
+
+
+def _env(sub: Sub, words: list[str], ctx: SubstContext) -> str:
+    if ctx.dialect is Dialect.ROS1:
+        _count(sub, words, ctx, 1, 1)
+    else:
+        _count(sub, words, ctx, 1, 2)
+    value = os.environ.get(words[0])
+    if value is not None:
+        return value
+    if len(words) == 2:
+        return words[1]
+    if ctx.dialect is Dialect.ROS2:
+        raise ctx.error(f"environment variable '{words[0]}' does not exist")
+    raise ctx.error(f"environment variable '{words[0]}' is not set")
+
+
+def _optenv(sub: Sub, words: list[str], ctx: SubstContext) -> str:
+    if not words:
+        _count(sub, words, ctx, 1, 1)
+    return os.environ.get(words[0], " ".join(words[1:]))
+
+
+def _anon(sub: Sub, words: list[str], ctx: SubstContext) -> str:
+    _count(sub, words, ctx, 1, 1)
+    # Stable within one run, distinct between runs: the same name twice gives the same value.
+    tag = hashlib.sha1(f"{os.getpid()}:{words[0]}".encode()).hexdigest()[:10]
+    return f"{words[0]}_{tag}"
+
+
+def _dirname(sub: Sub, words: list[str], ctx: SubstContext) -> str:
+    _count(sub, words, ctx, 0, 0)
+    return str(ctx.path.parent)
+
+
+def _filename(sub: Sub, words: list[str], ctx: SubstContext) -> str:
+    _count(sub, words, ctx, 0, 0)
+    return str(ctx.path)
+
+
+def _text(value: Any) -> str:
+    return ("true" if value else "false") if isinstance(value, bool) else str(value)
+
+
+def _eval1(sub: Sub, words: list[str], ctx: SubstContext) -> str:
+    del words
+    functions: dict[str, Callable[..., Any]] = {
+        "arg": lambda n: _lookup(str(n), ctx),
+        "find": lambda p: _find(Sub("find", (), p), [str(p)], ctx),
+        "env": lambda v: _env(Sub("env", (), v), [str(v)], ctx),
+        "optenv": lambda v, d="": os.environ.get(str(v), str(d)),
+        "anon": lambda n: _anon(Sub("anon", (), n), [str(n)], ctx),
+        "dirname": lambda: str(ctx.path.parent),
+    }
+    names = {k: _typed(v) for k, v in ctx.args.items() if v is not None}
+    try:
+        result = safe_eval(sub.raw, names, functions)
+    except EvalError as exc:
+        raise ctx.error(f"$(eval {sub.raw}): {exc}") from None
+    # roslaunch writes Python's str(): True/False.
+    return str(result)
+
+
+def _typed(value: str) -> Any:
+    # roslaunch offers args to eval as strings, except that true/false read as booleans.
+    low = value.lower()
+    if low in ("true", "false"):
+        return low == "true"
+    return value
+
+
+def _eval2(sub: Sub, words: list[str], ctx: SubstContext) -> str:
+    del words
+    text = sub.raw
+    if len(text) >= 2 and text[0] == text[-1] and text[0] in "'\"":
+        text = text[1:-1]
+    expr = resolve(text, ctx)
+    names: dict[str, Any] = {k: v for k, v in vars(math).items() if not k.startswith("_")}
+    names["math"] = math
+    functions = {k: v for k, v in names.items() if callable(v)}
+    try:
+        result = safe_eval(expr, names, functions)
+    except EvalError as exc:
+        raise ctx.error(f"$(eval {sub.raw}): {exc}") from None
+    return str(result)
+
+
+def _command(sub: Sub, words: list[str], ctx: SubstContext) -> str:
+    from robotmodel.xacro import expand
+
+    _count(sub, words, ctx, 1, 2)
+    source = parse_xacro_command(words[0], ctx)
+    return expand(source.file, dict(source.mappings), package_paths=ctx.package_paths)
+
+
+def _not(sub: Sub, words: list[str], ctx: SubstContext) -> str:
+    _count(sub, words, ctx, 1, 1)
+    return _text(not truth(words[0], ctx, "$(not)"))
+
+
+def _and(sub: Sub, words: list[str], ctx: SubstContext) -> str:
+    _count(sub, words, ctx, 2, 2)
+    values = [truth(w, ctx, "$(and)") for w in words]  # both checked, as launch does
+    return _text(all(values))
+
+
+def _or(sub: Sub, words: list[str], ctx: SubstContext) -> str:
+    _count(sub, words, ctx, 2, 2)
+    values = [truth(w, ctx, "$(or)") for w in words]
+    return _text(any(values))
+
+
+def _equals(sub: Sub, words: list[str], ctx: SubstContext) -> str:
+    _count(sub, words, ctx, 2, 2)
+    return _text(words[0] == words[1])
+
+
+Handler = Callable[[Sub, list[str], SubstContext], str]
+
+_ROS1: dict[str, Handler] = {
+    "arg": _arg, "find": _find, "env": _env, "optenv": _optenv, "anon": _anon, "dirname": _dirname,
+    "eval": _eval1,
+}
+_ROS2: dict[str, Handler] = {
+    "var": _arg, "find-pkg-share": _find, "find-pkg-prefix": _find_prefix, "env": _env, "anon": _anon,
+    "dirname": _dirname, "filename": _filename, "eval": _eval2, "command": _command, "not": _not,
+    "and": _and, "or": _or, "equals": _equals,
+}
+
+_XACRO_PROGRAMS = ("xacro", "xacro.py")
+
+
+def parse_xacro_command(command: str, ctx: SubstContext) -> XacroSource:
+    """``xacro [options] FILE [name:=value ...]`` (any path to xacro or xacro.py) as a XacroSource.
+
+    Other programs are refused: launch files run nothing but xacro here.
+    """
+    try:
+        words = shlex.split(command)
+    except ValueError as exc:
+        raise ctx.error(f"cannot split command '{command}': {exc}") from None
+    if not words or Path(words[0]).name not in _XACRO_PROGRAMS:
+        program = words[0] if words else ""
+        raise ctx.error(f"command '{command}': only xacro commands are run, not '{program}'")
+    files: list[str] = []
+    mappings: list[tuple[str, str]] = []
+    for word in words[1:]:
+        if ":=" in word:
+            name, _, value = word.partition(":=")
+            mappings.append((name.strip(), value.strip()))
+        elif word.startswith("-"):
+            if word not in ("--inorder", "--legacy", "--xacro-ns", "--check-order"):
+                raise ctx.error(f"command '{command}': xacro option '{word}' is not supported in launch files")
+        else:
+            files.append(word)
+    if len(files) != 1:
+        raise ctx.error(f"command '{command}': expected one xacro input file, got {len(files)}")
+    path = Path(files[0])
+    if not path.is_absolute():
+        path = Path.cwd() / path
+    if not path.is_file():
+        raise ctx.error(f"command '{command}': no such file: {path}")
+    return XacroSource(path, tuple(mappings))
