@@ -71,16 +71,30 @@ class _Loader:
         self.accepted = 0
         self.skipped = 0
         self.newest: dict[str, int] = {}
+        self.held: dict[str, list[_Piece]] = {}
         self.start_ns = 2**63
         self.end_ns = 0
 
     # -------------------------------------------------------------- dynamic
     def flush(self) -> None:
+        """Decode what is queued into per-child arrays, held until :meth:`commit`.
+
+        Holding them lets each frame go into the buffer in one bulk insert, sized once,
+        instead of regrowing its arrays (by an eighth at a time) at every flush.
+        """
         if not self.decoder.pending_messages:
             return
         blocks, slow = self.decoder.flush()
-        pieces = _by_child(blocks, slow)
-        for child, parts in pieces.items():
+        for child, parts in _by_child(blocks, slow).items():
+            # Own copies of the columns, so that each decoded block is freed now.
+            self.held.setdefault(child, []).extend(
+                (p, np.array(st), np.array(po), np.array(o)) for p, st, po, o in parts)
+
+    def commit(self) -> None:
+        """Insert every held sample, frame by frame (each frame's arrays freed once inserted)."""
+        self.flush()
+        while self.held:
+            child, parts = self.held.popitem()
             self._insert_child(child, parts)
 
     def _insert_child(self, child: str, parts: list[tuple[str, Any, Any, Any]]) -> None:
@@ -115,7 +129,7 @@ class _Loader:
 
     # --------------------------------------------------------------- static
     def static(self, data: bytes) -> None:
-        self.flush()
+        self.commit()  # a frame switching between static and dynamic keeps tf2's order
         for parent, child, stamp_ns, pose in self.reference(data):
             if not all(v - v == 0.0 for v in pose) or not any(pose[3:]) or stamp_ns < 0:
                 self.skipped += 1
@@ -222,7 +236,7 @@ def load_recording(
                     loader.decoder.add(n, data)
                     if loader.decoder.pending_messages >= _FLUSH_MESSAGES:
                         loader.flush()
-                        bar.update(n, loader.accepted)
+                        bar.update(n)
                 elif role == "static":
                     loader.static(data)
                 elif role == "joints":
@@ -230,7 +244,7 @@ def load_recording(
                         joints.add(rec.deserialize(data, JOINT_STATE_TYPE))
                 else:
                     description = str(rec.deserialize(data, STRING_TYPE).data)
-            loader.flush()
+            loader.commit()
         except RecordingError:
             raise
         except damaged as exc:

@@ -14,7 +14,7 @@ _WIDTH = 30
 
 
 class Progress:
-    """``update(done)`` redraws ``label [#####     ]  42%  1,234,567 transforms`` when due.
+    """``update(done)`` redraws ``label [#####     ]  42%  12,345 messages`` when due.
 
     ``enabled=None`` shows it only when ``stream`` is a terminal; short reads (under a
     second) never draw anything.
@@ -30,8 +30,8 @@ class Progress:
         self._next = self._start + delay_s
         self._drawn = False
 
-    def update(self, done: int, transforms: int) -> None:
-        """Redraw if enabled and due: ``done`` of ``total`` messages read, ``transforms`` loaded."""
+    def update(self, done: int) -> None:
+        """Redraw if enabled and due: ``done`` of ``total`` messages read."""
         if not self.enabled:
             return
         now = time.monotonic()
@@ -40,7 +40,7 @@ class Progress:
         self._next = now + _PERIOD_S
         frac = min(done / self.total, 1.0)
         bar = "#" * int(frac * _WIDTH)
-        self.stream.write(f"\r{self.label} [{bar:<{_WIDTH}}] {frac * 100:3.0f}%  {transforms:,} transforms")
+        self.stream.write(f"\r{self.label} [{bar:<{_WIDTH}}] {frac * 100:3.0f}%  {done:,} messages")
         self.stream.flush()
         self._drawn = True
 

@@ -5,10 +5,11 @@ same byte layout, with only stamps and poses changing. The first message of a sh
 decoded by the reference decoder (:func:`robotmodel.msgs.decode_tf_records` for CDR,
 rosbags for ROS 1) and scanned for where its stamps and poses lie; the layout is kept
 only when the values read at those offsets equal the reference's. Messages of that
-length are then stacked into one ``(B, length)`` byte array; those whose every other
-byte (counts, string lengths, frame names, padding, encapsulation) equals the proven
-message's have the same layout by construction, and their stamps and poses are read
-for all B at once. Anything else goes through the reference decoder one by one.
+length are then stacked into one ``(B, width)`` array of padded rows; those whose every
+other byte (counts, string lengths, frame names, padding, encapsulation) equals the
+proven message's (compared as masked 64-bit words) have the same layout by construction,
+and their stamps and poses are read for all B at once (as whole int32/float64 words for
+CDR). Anything else goes through the reference decoder one by one.
 """
 
 from __future__ import annotations
@@ -16,6 +17,7 @@ from __future__ import annotations
 import struct
 from collections.abc import Callable
 from dataclasses import dataclass
+from itertools import chain
 from typing import Any
 
 import numpy as np
@@ -29,8 +31,8 @@ __all__ = ["Block", "TFArrayDecoder", "ros1_reference"]
 _NS = 1_000_000_000
 _U32 = struct.Struct("<I")
 _MAX_LAYOUTS_PER_LENGTH = 8
-_STAMP_BYTES = np.arange(8)
-_POSE_BYTES = np.arange(56)
+_LEAD = 4
+_SEVEN = np.arange(7)
 
 
 @dataclass(frozen=True, slots=True)
@@ -50,12 +52,15 @@ class Block:
 
 @dataclass(slots=True)
 class _Layout:
+    """Where one message shape keeps its values, in padded-row coordinates (see ``_rows``)."""
+
     parents: tuple[str, ...]
     children: tuple[str, ...]
     stamp_offs: list[int]  # where each transform's sec, nanosec start
     pose_offs: list[int]  # where its seven doubles start
-    struct_idx: npt.NDArray[np.intp]  # every other byte
-    template: npt.NDArray[np.uint8]  # their values
+    mask: npt.NDArray[np.uint64]  # all ones over structure bytes, zero over values
+    template: npt.NDArray[np.uint64]  # the proven message's structure bytes (masked)
+    aligned: bool  # stamps 4-aligned and poses 8-aligned in the row: read as words, not bytes
 
 
 def _scan(data: bytes, ros1: bool) -> tuple[list[str], list[str], list[int], list[int], list[int]] | None:
@@ -144,15 +149,18 @@ class TFArrayDecoder:
             slow.append((order, self._decode_one(data)))
             return
         orders = np.fromiter((o for o, _ in items), dtype=np.int64, count=len(items))
-        arr = np.frombuffer(b"".join(d for _, d in items), dtype=np.uint8).reshape(len(items), length)
+        arr = _rows([d for _, d in items], length)
         left = np.arange(len(items))
         layouts = self._layouts.setdefault(length, [])
         tried = 0
         while left.size:
             rows = arr if left.size == len(items) else arr[left]
+            words = rows.view(np.uint64)
             taken = np.zeros(left.size, dtype=bool)
             for layout in layouts:
-                match = (np.take(rows, layout.struct_idx, axis=1) == layout.template).all(axis=1) & ~taken
+                diff = np.bitwise_xor(words, layout.template)
+                diff &= layout.mask
+                match = ~diff.any(axis=1) & ~taken
                 if match.all():
                     blocks.append(self._extract(layout, rows, orders[left]))
                     taken = match
@@ -184,17 +192,21 @@ class TFArrayDecoder:
         parents, children, stamp_offs, pose_offs, seq_offs = scanned
         if (parents != [r.parent for r in records] or children != [r.child for r in records]):
             return None
-        stamp_idx = (np.asarray(stamp_offs, dtype=np.intp)[:, None] + _STAMP_BYTES).ravel()
-        pose_idx = (np.asarray(pose_offs, dtype=np.intp)[:, None] + _POSE_BYTES).ravel()
-        value = np.zeros(len(data), dtype=bool)
-        value[stamp_idx] = True
-        value[pose_idx] = True
+        row = _rows([data], len(data))
+        stamp_offs = [o + _LEAD for o in stamp_offs]
+        pose_offs = [o + _LEAD for o in pose_offs]
+        value = np.zeros(row.shape[1], dtype=bool)
+        for off in stamp_offs:
+            value[off:off + 8] = True
+        for off in pose_offs:
+            value[off:off + 56] = True
         for off in seq_offs:
-            value[off:off + 4] = True
-        struct_idx = np.flatnonzero(~value)
-        raw = np.frombuffer(data, dtype=np.uint8)
-        layout = _Layout(tuple(parents), tuple(children), stamp_offs, pose_offs, struct_idx, raw[struct_idx].copy())
-        block = self._extract(layout, raw[None, :], np.zeros(1, dtype=np.int64))
+            value[off + _LEAD:off + _LEAD + 4] = True
+        mask = np.where(value, np.uint8(0), np.uint8(0xFF)).view(np.uint64)
+        aligned = all(o % 4 == 0 for o in stamp_offs) and all(o % 8 == 0 for o in pose_offs)
+        layout = _Layout(tuple(parents), tuple(children), stamp_offs, pose_offs, mask,
+                         row[0].view(np.uint64) & mask, aligned)
+        block = self._extract(layout, row, np.zeros(1, dtype=np.int64))
         expect_stamps = [r.stamp_ns for r in records]
         expect_poses = np.array([r.pose for r in records], dtype=np.float64).reshape(-1, 7)
         same_poses = block.poses[0].tobytes() == expect_poses.tobytes()  # bit for bit, NaN included
@@ -204,20 +216,38 @@ class TFArrayDecoder:
 
     def _extract(self, layout: _Layout, rows: npt.NDArray[np.uint8], orders: npt.NDArray[np.int64]) -> Block:
         n, t = rows.shape[0], len(layout.children)
-        # One contiguous slice copy per transform beats a gather over every byte index.
+        if layout.aligned:
+            # CDR aligns doubles to 8 and the row puts them on 8-byte words: a gather of words.
+            ints = rows.view("<i4")
+            idx = np.asarray(layout.stamp_offs, dtype=np.intp) // 4
+            sec = np.take(ints, idx, axis=1).astype(np.int64)
+            nanosec = np.take(ints, idx + 1, axis=1).astype(np.int64) & 0xFFFFFFFF
+            pose_idx = (np.asarray(layout.pose_offs, dtype=np.intp)[:, None] // 8 + _SEVEN).ravel()
+            poses = np.take(rows.view("<f8"), pose_idx, axis=1).reshape(n, t, 7)
+            return Block(layout.parents, layout.children, sec * _NS + nanosec, poses, orders)
+        # Unaligned (ROS 1): one contiguous slice copy per transform.
         stamp_bytes = np.empty((n, t, 8), dtype=np.uint8)
         pose_bytes = np.empty((n, t, 56), dtype=np.uint8)
         for j, (s_off, p_off) in enumerate(zip(layout.stamp_offs, layout.pose_offs, strict=True)):
             stamp_bytes[:, j] = rows[:, s_off:s_off + 8]
             pose_bytes[:, j] = rows[:, p_off:p_off + 56]
-        if self.ros1:
-            pairs = stamp_bytes.view("<u4").reshape(n, t, 2).astype(np.int64)
-        else:
-            pairs = stamp_bytes.view("<i4").reshape(n, t, 2).astype(np.int64)
+        pairs = stamp_bytes.view("<u4" if self.ros1 else "<i4").reshape(n, t, 2).astype(np.int64)
+        if not self.ros1:
             pairs[..., 1] &= 0xFFFFFFFF  # nanosec is unsigned
         stamps = pairs[..., 0] * _NS + pairs[..., 1]
-        poses = pose_bytes.view("<f8").reshape(n, t, 7)
-        return Block(layout.parents, layout.children, stamps, poses, orders)
+        return Block(layout.parents, layout.children, stamps, pose_bytes.view("<f8").reshape(n, t, 7), orders)
+
+
+def _rows(datas: list[bytes], length: int) -> npt.NDArray[np.uint8]:
+    """Messages of one length as rows of a byte array: ``_LEAD`` zero bytes, the message, zeros to 8.
+
+    The lead puts CDR's body (which starts after the 4-byte encapsulation header) on an
+    8-byte boundary, so its 8-aligned doubles fall on whole float64 words of the row.
+    """
+    width = -(-(length + _LEAD) // 8) * 8
+    lead, tail = bytes(_LEAD), bytes(width - length - _LEAD)
+    joined = b"".join(chain.from_iterable((lead, d, tail) for d in datas))
+    return np.frombuffer(joined, dtype=np.uint8).reshape(len(datas), width)
 
 
 def ros1_reference(deserialize: Callable[[bytes, str], Any]) -> Callable[[bytes], list[TFRecord]]:
