@@ -20,7 +20,3 @@ def test_corpus_tests_skip_when_the_corpus_is_absent() -> None:
     assert len(skips) >= 5 and "failed" not in result.stdout
     assert all(line.endswith("(set ROBOTMODEL_CORPUS to run these tests)") for line in skips), skips
 
-
-def test_conftest_names_nothing_outside_the_project() -> None:
-    text = (REPO / "tests" / "conftest.py").read_text(encoding="utf-8").lower()
-    assert "steering" not in text and "session" not in text.replace('scope="session"', "")

@@ -18,7 +18,7 @@ Derivation (rmw_zenoh docs/design.md, "Topic and Service name mapping", "Graph C
   time in ns since the epoch, one byte 16 (the GID length), the 16-byte GID.
 - GID: XXH3-128 of the publisher's token, low 64 bits then high 64 bits, little-endian
   (checked below on the design doc's talker token against the value rmw_zenoh's own C++
-  xxhash gives, recorded in shared/reference/zenoh-rmw-mcap-meshcat.md §2).
+  xxhash gives, from its simplified_xxhash3.cpp compiled on its own).
 - Payload: CDR encapsulation header ``00 01 00 00`` (little-endian CDR) and the XCDR1 body:
   uint32 transform count; per transform int32 sec, uint32 nanosec, then each string as
   uint32 length counting its NUL, the bytes and the NUL, 4-aligned for the next length;
