@@ -41,6 +41,8 @@ DEFAULT_TOPICS = ("/tf", "/tf_static", "/joint_states", "/robot_description")
 TF_TYPE = "tf2_msgs/msg/TFMessage"
 JOINT_STATE_TYPE = "sensor_msgs/msg/JointState"
 STRING_TYPE = "std_msgs/msg/String"
+# ROS 1 bags from before tf2 carry /tf as tf/tfMessage: the same fields, so the same bytes.
+_OLD_TF_TYPE = "tf/msg/tfMessage"
 _FLUSH_MESSAGES = 2048
 _log = logging.getLogger("robotmodel.recording")
 
@@ -211,7 +213,7 @@ def load_recording(
             msgtype = rec.msgtype(topic)
             if msgtype is None:
                 continue
-            if msgtype == TF_TYPE:
+            if msgtype in (TF_TYPE, _OLD_TF_TYPE):
                 roles[topic] = "static" if topic.rstrip("/").endswith("tf_static") else "tf"
             elif msgtype == JOINT_STATE_TYPE:
                 roles[topic] = "joints"

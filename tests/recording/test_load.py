@@ -200,3 +200,22 @@ def test_out_of_order_and_repeated_stamps_as_single_inserts(tmp_path):
         got, want = buffer.lookup_ns("a", "b", t), reference.lookup_ns("a", "b", t)
         assert got[1] == want[1]
         np.testing.assert_allclose(got[0], want[0], rtol=0, atol=1e-14)
+
+
+def test_ros1_tf_tfmessage_of_old_bags(tmp_path):
+    from recording.bagfiles import TS1, build
+    from rosbags.rosbag1 import Writer
+    from rosbags.typesys import get_types_from_msg
+
+    if "tf/msg/tfMessage" not in TS1.types:
+        TS1.register(get_types_from_msg("geometry_msgs/TransformStamped[] transforms", "tf/msg/tfMessage"))
+    path = tmp_path / "old.bag"
+    with Writer(path) as w:
+        conn = w.add_connection("/tf", "tf/msg/tfMessage", typestore=TS1)
+        for k in range(5):
+            msg = build(TS1, Msg("/tf", stamp(k), "tf", [("odom", "base", stamp(k), base_pose(k))]), True)
+            w.write(conn, stamp(k), TS1.serialize_ros1(TS1.types["tf/msg/tfMessage"](transforms=msg.transforms),
+                                                       "tf/msg/tfMessage"))
+    buffer = load_buffer(path, progress=False)
+    pose, _ = buffer.lookup_ns("odom", "base", stamp(2) + DT // 2)
+    np.testing.assert_allclose(mat(pose), mat(slerp(base_pose(2), base_pose(3), 0.5)), atol=1e-12)
