@@ -21,6 +21,7 @@ __all__ = [
     "CommandParser",
     "add_mapping_arguments",
     "add_model_arguments",
+    "add_model_options",
     "apply_verbose",
     "load_description",
     "read_stdin_document",
@@ -129,6 +130,15 @@ def add_model_arguments(parser: argparse.ArgumentParser, *, file_help: str | Non
     add_mapping_arguments(parser)
     parser.add_argument("file", metavar="FILE", nargs="?" if file_optional else None,
                         help=file_help or "a .urdf or .xacro file ('-' reads stdin)")
+    add_model_options(parser)
+
+
+def add_model_options(parser: argparse.ArgumentParser) -> None:
+    """Add the package-path, trust and ``--verbose`` arguments of model commands (for their own FILEs).
+
+    A command reading several files adds its positionals itself, calls
+    :func:`add_mapping_arguments` and this, and loads each with ``load_description(args, file)``.
+    """
     parser.add_argument(
         "--package-path", action="append", default=[], metavar="DIR",
         help="search DIR first for ROS packages ($(find pkg), package://); repeatable",
@@ -158,15 +168,16 @@ def read_stdin_document() -> str:
     return text
 
 
-def load_description(args: argparse.Namespace) -> tuple[RobotDescription, Path]:
-    """Load the command's FILE (or stdin for ``-``); returns it and the folder relative paths start from."""
+def load_description(args: argparse.Namespace, file: str | None = None) -> tuple[RobotDescription, Path]:
+    """Load the command's FILE, or ``file`` when given ('-': stdin); returns it and the folder paths start from."""
     from robotmodel.model import load
 
     apply_verbose(args)
     kwargs: dict[str, Any] = {"package_paths": args.package_path, "untrusted": args.untrusted}
-    if args.file == "-":
+    source = args.file if file is None else file
+    if source == "-":
         return load(read_stdin_document(), args.mappings, **kwargs), Path.cwd()
-    return load(args.file, args.mappings, **kwargs), Path(args.file).resolve().parent
+    return load(source, args.mappings, **kwargs), Path(source).resolve().parent
 
 
 def write_atomic(path: str | os.PathLike[str], text: str) -> None:
