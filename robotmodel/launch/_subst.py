@@ -180,9 +180,10 @@ def _apply(sub: Sub, ctx: SubstContext) -> str:
     table = _ROS1 if ctx.dialect is Dialect.ROS1 else _ROS2
     handler = table.get(sub.name)
     if handler is None:
-        valid = ", ".join(sorted(table))
-        shown = f"$({sub.name} {sub.raw})" if sub.raw else f"$({sub.name})"
-        raise ctx.error(f"Unknown substitution command [{shown}]. Valid commands are [{valid}]")
+        if ctx.dialect is Dialect.ROS2:
+            raise ctx.error(f"Unknown substitution: {sub.name}")
+        shown = f"{sub.name} {sub.raw}" if sub.raw else sub.name
+        raise ctx.error(f"Unknown substitution command [{shown}]. Valid commands are {sorted(table)}")
     words = [resolve_parts(a, ctx) for a in sub.args]
     try:
         return handler(sub, words, ctx)
@@ -286,7 +287,10 @@ def _eval1(sub: Sub, words: list[str], ctx: SubstContext) -> str:
         "anon": lambda n: _anon(Sub("anon", (), n), [str(n)], ctx),
         "dirname": lambda: str(ctx.path.parent),
     }
-    names = {k: _typed(v) for k, v in ctx.args.items() if v is not None}
+    if "__" in sub.raw:
+        raise ctx.error("$(eval ...) may not contain double underscore expressions")
+    names: dict[str, Any] = {"true": True, "false": False}
+    names.update({k: _typed(v) for k, v in ctx.args.items() if v is not None})
     try:
         result = safe_eval(sub.raw, names, functions)
     except EvalError as exc:
@@ -296,8 +300,14 @@ def _eval1(sub: Sub, words: list[str], ctx: SubstContext) -> str:
 
 
 def _typed(value: str) -> Any:
-    # roslaunch offers args to eval as strings, except that true/false read as booleans.
-    low = value.lower()
+    # roslaunch offers args to eval by bare name typed as its 'auto' parameter type does:
+    # int, else float, else true/false as booleans, else the string.
+    for kind in (int, float):
+        try:
+            return kind(value)
+        except ValueError:
+            pass
+    low = value.strip().lower()
     if low in ("true", "false"):
         return low == "true"
     return value

@@ -1,0 +1,162 @@
+"""Which processes a launch file starts, with which arguments (ROS 1 and ROS 2 XML, includes, conditions)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from robotmodel.cli.main import main
+
+from robotmodel.errors import LaunchError
+from robotmodel.launch import build_plan, load_launch_file
+
+
+def plan_of(path: Path, root: Path, tmp_path: Path, **args: str):
+    launch = load_launch_file(path, args, [root])
+    return build_plan(launch, tmp_path, package_paths=[root], browser=False)
+
+
+def argv(plan) -> dict[str, tuple[str, ...]]:
+    return {p.name: p.argv for p in plan.processes}
+
+
+def test_ros1_nested_includes_conditions_and_params(pkg, ros1_top, tmp_path):
+    top = ros1_top
+    plan = plan_of(top, pkg.root, tmp_path)
+    xacro, root = str(pkg.xacro), str(pkg.root)
+    assert [p.name for p in plan.processes] == ["/jsp", "/rsp", "/map_odom"]
+    assert argv(plan) == {
+        # rate comes from $(eval 2 * 5) in top.launch; zeros from a <rosparam> map.
+        "/jsp": ("joint-state-publisher", xacro, "prefix:=", "--package-path", root, "--rate", "10",
+                 "--zeros", "shoulder=0.5"),
+        # publish_frequency: $(eval rate * 5) in the middle file, passed two includes down.
+        "/rsp": ("robot-state-publisher", xacro, "prefix:=", "--package-path", root, "--publish-frequency", "50"),
+        "/map_odom": ("static-transform-publisher", "1", "2", "0", "0", "0", "0", "map", "odom", "100"),
+    }
+    assert plan.skipped == ["/sensors/scan_filter (probe_description/scan_filter.py): no robotmodel equivalent, "
+                            "not started"]
+
+
+def test_ros1_command_line_args_flip_the_conditions(pkg, ros1_top, tmp_path):
+    top = ros1_top
+    plan = plan_of(top, pkg.root, tmp_path, gui="true", with_static="false", prefix="left_")
+    xacro, root = str(pkg.xacro), str(pkg.root)
+    assert argv(plan) == {
+        "/jsp_gui": ("joint-state-publisher-gui", xacro, "prefix:=left_", "--package-path", root),
+        "/rsp": ("robot-state-publisher", xacro, "prefix:=left_", "--package-path", root,
+                 "--publish-frequency", "50"),
+    }
+    assert plan.skipped == []
+
+
+def test_ros2_scopes_namespaces_command_and_nested_params(pkg, ros2_top, tmp_path):
+    top = ros2_top
+    plan = plan_of(top, pkg.root, tmp_path)
+    xacro, root = str(pkg.xacro), str(pkg.root)
+    assert argv(plan) == {
+        "/robot1/robot_state_publisher": ("robot-state-publisher", xacro, "prefix:=a_", "--package-path", root,
+                                          "--publish-frequency", "50", "--frame-prefix", "x/"),
+        # No robot_description parameter: ROS 2's joint_state_publisher reads the topic.
+        "/joint_state_publisher": ("joint-state-publisher", "--package-path", root, "--zeros", "a_shoulder=0.5",
+                                   "--source-list", "/extra_states"),
+        # child=odom set by the include's <arg> wins over statics.launch.xml's default, two levels down.
+        "/map_odom": ("static-transform-publisher", "--x", "1", "--y", "2", "--frame-id", "map",
+                      "--child-frame-id", "odom"),
+        # $(var child) is still set after the include (ROS 2 includes do not scope), so rviz2 runs.
+        "/rviz2": ("view", "--follow", "--package-path", root),
+    }
+    assert plan.skipped == ["/teleop (probe_description/teleop.py): no robotmodel equivalent, not started"]
+    assert any("/robot1/robot_state_publisher: namespace /robot1 not applied" in n for n in plan.notes)
+
+
+def test_ros2_group_scopes_let_and_gui_argument(pkg, ros2_top, tmp_path):
+    top = ros2_top
+    plan = plan_of(top, pkg.root, tmp_path, gui="true", model=str(pkg.xacro))
+    names = [p.name for p in plan.processes]
+    assert names == ["/robot1/robot_state_publisher", "/joint_state_publisher_gui", "/map_odom", "/rviz2"]
+    leak = pkg.launch("leak.launch.xml", """
+        <launch>
+          <group><let name="inner" value="1"/></group>
+          <node pkg="tf2_ros" exec="static_transform_publisher" args="$(var inner)"/>
+        </launch>
+    """)
+    with pytest.raises(LaunchError, match=r"leak\.launch\.xml:3: launch configuration 'inner' does not exist"):
+        load_launch_file(leak, {}, [pkg.root])
+
+
+def test_textfile_literal_value_and_search_up_the_namespace(pkg, tmp_path):
+    urdf = pkg.dir / "urdf" / "plain.urdf"
+    urdf.write_text('<robot name="r"><link name="a"/></robot>')
+    path = pkg.launch("sensors.launch", f"""
+        <launch>
+          <param name="robot_description" textfile="$(find probe_description)/urdf/plain.urdf"/>
+          <group ns="arm">
+            <param name="robot_description" value="&lt;robot name='lit'&gt;&lt;link name='b'/&gt;&lt;/robot&gt;"/>
+            <group ns="deeper">
+              <node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp_arm"/>
+            </group>
+          </group>
+          <node pkg="tf" type="static_transform_publisher" name="map_odom" args="0 0 0 0 0 0 map odom 100"/>
+          <node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>
+          <node pkg="rviz" type="rviz" name="rviz" args="-d $(find probe_description)/x.rviz"/>
+          <node pkg="probe_description" type="odom_sim.py" name="odom_sim"/>
+          <node pkg="probe_description" type="scan_sim.py" name="scan_sim" env="{urdf}"/>
+        </launch>
+    """)
+    plan = plan_of(path, pkg.root, tmp_path)
+    lit = argv(plan)["/arm/deeper/rsp_arm"][1]
+    assert Path(lit).read_text() == "<robot name='lit'><link name='b'/></robot>"
+    assert argv(plan)["/rsp"] == ("robot-state-publisher", str(urdf), "--package-path", str(pkg.root))
+    assert [p.name for p in plan.processes] == ["/arm/deeper/rsp_arm", "/map_odom", "/rsp", "/rviz"]
+    assert [s.split(" ")[0] for s in plan.skipped] == ["/odom_sim", "/scan_sim"]
+
+
+def test_substitutions(pkg, tmp_path, monkeypatch):
+    monkeypatch.setenv("PROBE_SET", "from_env")
+    monkeypatch.delenv("PROBE_UNSET", raising=False)
+    path = pkg.launch("subs.launch", """
+        <launch>
+          <arg name="a" value="$(env PROBE_SET)"/>
+          <arg name="b" value="$(optenv PROBE_UNSET fall back)"/>
+          <arg name="c" value="$(eval a == 'from_env' and 3 > 2)"/>
+          <arg name="d" value="$(eval arg('b').upper())"/>
+          <arg name="e" value="$(dirname)"/>
+          <node pkg="tf" type="static_transform_publisher" name="s"
+                args="$(arg a) $(arg b) $(arg c) $(arg d) $(arg e) $(anon x) $(anon x)"/>
+        </launch>
+    """)
+    words = argv(plan_of(path, pkg.root, tmp_path))["/s"][1:]
+    # args are split on blanks, as the node's argv.
+    assert words[:7] == ("from_env", "fall", "back", "True", "FALL", "BACK", str(path.parent))
+    assert words[7] == words[8] and words[7].startswith("x_")
+
+
+def test_ros2_substitutions(pkg, tmp_path):
+    path = pkg.launch("subs.launch.xml", """
+        <launch>
+          <arg name="n" default="3"/>
+          <let name="v" value="$(eval '$(var n) * math.pi / 3')"/>
+          <let name="w" value="$(eval 'round(sqrt(16))')"/>
+          <node pkg="tf2_ros" exec="static_transform_publisher" name="s"
+                args="$(var v) $(var w) $(not false) $(and true 1) $(or 0 false) $(equals a a) $(env PROBE_NOPE dflt)
+                      '$(find-pkg-share probe_description)'"/>
+        </launch>
+    """)
+    words = argv(plan_of(path, pkg.root, tmp_path))["/s"][1:]
+    assert words == ("3.141592653589793", "4", "true", "true", "false", "true", "dflt", str(pkg.dir))
+
+
+def test_pkg_file_form_and_dry_run_output(pkg, ros1_top, capsys):
+    del ros1_top
+    code = main(["launch", "probe_description", "top.launch", "--dry-run", "--package-path", str(pkg.root),
+                 "gui:=true"])
+    out = capsys.readouterr().out.splitlines()
+    assert code == 0
+    assert out[0] == "skipped: /sensors/scan_filter (probe_description/scan_filter.py): no robotmodel equivalent, " \
+                     "not started"
+    assert out[1:] == [
+        f"/jsp_gui: robotmodel joint-state-publisher-gui {pkg.xacro} prefix:= --package-path {pkg.root} --open",
+        f"/rsp: robotmodel robot-state-publisher {pkg.xacro} prefix:= --package-path {pkg.root} "
+        "--publish-frequency 50",
+        "/map_odom: robotmodel static-transform-publisher 1 2 0 0 0 0 map odom 100",
+    ]
