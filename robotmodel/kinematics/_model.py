@@ -298,6 +298,8 @@ class KinematicModel:
         free: dict[str, FloatArray] = {}
         for name, value in (extra or {}).items():
             jtype = self._types.get(name)
+            if jtype is None:
+                raise UnknownJointError(f"unknown joint '{name}' for robot '{self.description.name}'", name)
             if jtype is JointType.FLOATING or jtype is JointType.PLANAR:
                 free[name] = free_or_planar(name, jtype, value)
             elif name in self.mimics:

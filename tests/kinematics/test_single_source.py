@@ -18,7 +18,7 @@ import pinocchio as pin
 import pytest
 from conftest import ERD_ROBOTS, erd_urdfs
 
-from robotmodel.errors import JointValueError, UnknownLinkError
+from robotmodel.errors import JointValueError, UnknownJointError, UnknownLinkError
 from robotmodel.kinematics import (
     PINOCCHIO_DATA_LIMIT,
     KinematicModel,
@@ -126,6 +126,14 @@ def test_unknown_link_is_one_error_type(panda: KinematicModel) -> None:
     for call in (lambda: state.link_pose("nope"), lambda: state.link_matrix("nope"),
                  lambda: state.jacobian("nope"), lambda: panda.description.link("nope")):
         with pytest.raises(UnknownLinkError, match="'nope'"):
+            call()
+
+
+def test_unknown_joint_is_one_error_type(panda: KinematicModel) -> None:
+    state = KinematicState(panda)
+    for call in (lambda: panda.vector({"nope": 0.0}), lambda: state.update({"nope": 0.0}),
+                 lambda: state.update(None, extra={"nope": [0, 0, 0]}), lambda: panda.description.joint("nope")):
+        with pytest.raises(UnknownJointError, match="'nope'"):
             call()
 
 
