@@ -27,6 +27,8 @@ caller (and the CLI) can catch one class and print one line. The tree::
     │                               the file and what was read (see robotmodel.recording)
     ├── LaunchError                 a launch file that cannot be run: bad XML, an unknown
     │                               substitution, a missing include or arg (file:line first)
+    ├── ConfigError                 a project config ([tool.robotmodel] in pyproject.toml or
+    │                               robotmodel.toml) that cannot be used (file and key first)
     └── TransformException          tf2's root (see robotmodel.tf)
         ├── LookupException
         ├── ConnectivityException
@@ -45,6 +47,7 @@ from typing import Any
 
 __all__ = [
     "BusError",
+    "ConfigError",
     "ConnectivityException",
     "ExtrapolationDirection",
     "ExtrapolationException",
@@ -140,6 +143,10 @@ class RecordingError(RobotModelError):
 
 class LaunchError(RobotModelError):
     """A launch file cannot be run; the text starts with ``FILE:LINE:`` of the element at fault."""
+
+
+class ConfigError(RobotModelError):
+    """A project config (``[tool.robotmodel]`` or ``robotmodel.toml``) cannot be used; names the file and key."""
 
 
 class BusError(RobotModelError):
