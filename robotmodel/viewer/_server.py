@@ -94,7 +94,7 @@ class _Socket(tornado.websocket.WebSocketHandler):
         except ValueError:
             return
         if isinstance(data, dict):
-            self.server._on_message(data)
+            self.server._on_message(data, self)
 
     def on_close(self) -> None:
         self.server._clients.discard(self)
@@ -114,11 +114,11 @@ class ViewerServer:
     """Serves the page on ``http://127.0.0.1:<port>/`` from a background thread.
 
     ``config`` returns the panel's JSON config for each new page; ``on_message`` gets
-    every JSON message a page sends (on the server's thread).
+    every JSON message a page sends and the page's handle (on the server's thread).
     """
 
     def __init__(self, store: SceneStore, *, title: str, config: Callable[[], dict[str, Any]],
-                 on_message: Callable[[dict[str, Any]], None], port: int | None = None) -> None:
+                 on_message: Callable[[dict[str, Any], object], None], port: int | None = None) -> None:
         self.store = store
         self.title = title
         self._config = config
@@ -223,10 +223,11 @@ class ViewerServer:
             except tornado.websocket.WebSocketClosedError:
                 self._clients.discard(client)
 
-    def broadcast_text(self, message: dict[str, Any]) -> None:
-        """Send one JSON message to every page."""
+    def broadcast_text(self, message: dict[str, Any], *, exclude: object = None) -> None:
+        """Send one JSON message to every page but ``exclude``."""
         for client in list(self._clients):
-            self._send_text(client, message)
+            if client is not exclude:
+                self._send_text(client, message)
 
     @property
     def client_count(self) -> int:

@@ -229,7 +229,7 @@ class Viewer:
         """Call ``callback(all_positions)`` whenever a page's slider moves (on the server's thread)."""
         self._callbacks.append(callback)
 
-    def _on_page_message(self, message: dict[str, Any]) -> None:
+    def _on_page_message(self, message: dict[str, Any], sender: object = None) -> None:
         kind = message.get("type")
         if kind == "joints" and isinstance(message.get("positions"), dict):
             values = {k: float(v) for k, v in message["positions"].items()
@@ -237,7 +237,8 @@ class Viewer:
             token = message.get("token")
             self.display(values, token=token if isinstance(token, int) else None)
             if self._server is not None:
-                self._server.broadcast_text({"type": "positions", "positions": values})
+                # Other pages' sliders follow; the sender's are ahead of this echo already.
+                self._server.broadcast_text({"type": "positions", "positions": values}, exclude=sender)
             for callback in self._callbacks:
                 callback(self.all_positions())
         elif kind == "show":

@@ -75,6 +75,17 @@ def test_live_page_draws_the_robot_and_a_joint_moves_it(name: str, bus: Bus, tmp
             assert changed > 0.001, f"moving {joint} changed only {changed:.4%} of the pixels"
             value = float(browser.evaluate(f"window.robotmodel.positions['{joint}']"))
             assert value != 0.0
+            # joint_state_publisher_gui's buttons: Center puts every slider on its zero, Randomize
+            # anywhere in its range (both through the 0..10000 slider steps).
+            joints = browser.evaluate("window.robotmodel.config.joints")
+            browser.evaluate("document.getElementById('center').click()")
+            centred = browser.evaluate("window.robotmodel.positions")
+            for j in joints:
+                assert abs(centred[j["name"]] - j["zero"]) <= (j["max"] - j["min"]) / 10000 + 1e-12, j
+            browser.evaluate("document.getElementById('randomize').click()")
+            randomized = browser.evaluate("window.robotmodel.positions")
+            assert all(j["min"] <= randomized[j["name"]] <= j["max"] for j in joints)
+            assert randomized != centred
     finally:
         code = proc.stop(signal.SIGINT)
     assert code == 0, proc.err[-20:]
