@@ -7,7 +7,8 @@ caller (and the CLI) can catch one class and print one line. The tree::
     ├── XacroError                  xacro expansion failed (file, line when known)
     │   └── UntrustedInputError     --untrusted refused $(env), an outside include, ...
     ├── ResourceError               a package or file a robot names could not be resolved
-    │   └── PackageNotFoundError    $(find pkg) / package:// names an unknown package
+    │   ├── PackageNotFoundError    $(find pkg) / package:// names an unknown package
+    │   └── RevisionError           a file at a git revision could not be read (diff --git)
     ├── URDFError                   the URDF is not a valid robot description
     │   └── URDFParseError          malformed XML or a malformed element
     ├── UnknownLinkError            a link name the robot does not have (every API)
@@ -61,6 +62,7 @@ __all__ = [
     "PublisherError",
     "RecordingError",
     "ResourceError",
+    "RevisionError",
     "RobotModelError",
     "TimeoutException",
     "TransformException",
@@ -94,6 +96,10 @@ class PackageNotFoundError(ResourceError):
         self.searched = searched
         where = ", ".join(searched) if searched else "nowhere (no search roots)"
         super().__init__(f"package '{package}' not found; searched: {where}")
+
+
+class RevisionError(ResourceError):
+    """A file at a git revision could not be read: not in a repository, an unknown revision, a path absent there."""
 
 
 class UntrustedInputError(XacroError):
