@@ -157,8 +157,9 @@ def serve_live(args: argparse.Namespace, desc: Any, initial: dict[str, float], f
 
             jsp = JointStatePublisher(desc, bus=node, zeros=viewer.positions)
             closers.insert(0, jsp)
-            free = set(jsp.free_joints)
-            viewer.on_joints(lambda _all: jsp.set({k: v for k, v in viewer.positions.items() if k in free}))
+            # Read per move: a new robot_description changes both robots' joints.
+            viewer.on_joints(lambda _all: jsp.set({k: v for k, v in viewer.positions.items()
+                                                   if k in jsp.free_joints}))
         if follow:
             closers.insert(0, _follow(node, viewer))
         if tf:
