@@ -1,9 +1,13 @@
 """See the robot: meshcat's browser viewer with meshes, joint sliders and TF frames.
 
 - :class:`Viewer`: build a robot's scene (meshes converted once and cached on disk), serve
-  it with a joint slider panel on 127.0.0.1, move joints with :meth:`Viewer.display`,
-  export a self-contained page with :meth:`Viewer.static_html`.
-- :func:`screenshot`: render a page in headless Chromium to PNG.
+  it with a joint slider panel on 127.0.0.1, move joints with :meth:`Viewer.display`
+  (redrawn at most 30 times a second, coalescing to the latest), show link frames
+  (:meth:`Viewer.show_frames`) and TF frames (:meth:`Viewer.show_tf`), swap the robot
+  (:meth:`Viewer.set_description`), export a self-contained page (:meth:`Viewer.static_html`).
+- :func:`screenshot` / :func:`screenshot_html`: render a page in headless Chromium to PNG.
+- :func:`build_scene`, :func:`load_mesh`: the scene as meshcat commands; one mesh file as
+  triangle arrays (through the cache).
 - :class:`Browser`: a small DevTools-protocol driver for headless Chromium.
 """
 
