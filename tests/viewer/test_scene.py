@@ -262,3 +262,31 @@ def test_textures_become_vertex_colours(tmp_path: Path) -> None:
     texels = image[((1 - uv[:, 1]) * (h - 1)).round().astype(int), (uv[:, 0] * (w - 1)).round().astype(int)]
     np.testing.assert_allclose(ours.mean(axis=0), texels.mean(axis=0), atol=8)
     assert ours.mean() < 200  # not the material's plain white
+
+
+def test_progress_bar_on_a_terminal(tmp_path: Path) -> None:
+    import pty
+
+    out = tmp_path / "panda.html"
+    env = dict(os.environ, ROBOTMODEL_CACHE_DIR=str(tmp_path / "cache"))
+    pid, fd = pty.fork()
+    if pid == 0:  # the child: stdout and stderr are the terminal
+        os.execve(sys.executable, [sys.executable, "-m", "robotmodel.cli.main", "view", str(PANDA),
+                                   "--static-html", str(out)], env)
+    chunks = []
+    while True:
+        try:
+            data = os.read(fd, 65536)
+        except OSError:  # EIO: the child closed the terminal
+            break
+        if not data:
+            break
+        chunks.append(data)
+    _, status = os.waitpid(pid, 0)
+    text = b"".join(chunks).decode(errors="replace")
+    assert os.waitstatus_to_exitcode(status) == 0, text
+    meshes = len({g.filename for link in load(PANDA).links for g in
+                  [v.geometry for v in link.visuals] + [c.geometry for c in link.collisions] if hasattr(g, "filename")})
+    assert f"meshes [{'#' * 30}] {meshes}/{meshes}" in text
+    assert f"meshes [{'.' * 30}] 0/{meshes}" in text
+    assert f"loaded {meshes} meshes (0 from the cache)" in text
