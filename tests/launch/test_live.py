@@ -181,3 +181,33 @@ def test_urdf_tutorial_display_launch_opens_sliders_viewer_and_tf(live, corpus, 
     # The launcher killed outright: its processes still go (they get SIGTERM when it dies).
     proc.kill()
     wait_gone(pids.values(), timeout=20.0)
+
+
+def test_sensors_launch_shape_runs_what_it_can(live, pkg):
+    """robot_description from textfile, map->odom with a period, RSP, rviz, and the package's own scripts."""
+    urdf = pkg.dir / "urdf" / "sensors.urdf"
+    urdf.write_text('<robot name="s"><link name="base_link"/><link name="laser"/>'
+                    '<joint name="laser_mount" type="fixed"><parent link="base_link"/><child link="laser"/>'
+                    '<origin xyz="0.15 0 0.3" rpy="0 0 0"/></joint></robot>')
+    path = pkg.launch("sensors.launch", """
+        <launch>
+          <param name="robot_description" textfile="$(find probe_description)/urdf/sensors.urdf"/>
+          <node pkg="tf" type="static_transform_publisher" name="map_to_odom" args="0 0 0 0 0 0 map odom 100"/>
+          <node pkg="robot_state_publisher" type="robot_state_publisher" name="robot_state_publisher"/>
+          <node pkg="rviz" type="rviz" name="rviz"/>
+          <node pkg="probe_description" type="odometry_node.py" name="odometry"/>
+          <node pkg="probe_description" type="laser_node.py" name="laser"/>
+        </launch>
+    """)
+    proc = launch(live, str(path), "--package-path", str(pkg.root))
+    pids = started(proc, 3)
+    assert sorted(pids) == ["map_to_odom-1", "robot_state_publisher-2", "rviz-3"]
+    proc.wait_line(r"^skipped: /laser ")
+    assert [line.split(" (")[0] for line in proc.out if line.startswith("skipped:")] == [
+        "skipped: /odometry", "skipped: /laser"]
+    buffer = Buffer()
+    with TransformListener(buffer):
+        assert np.allclose(wait_pose(buffer, "base_link", "laser")[0], (0.15, 0, 0.3))
+        assert np.allclose(wait_pose(buffer, "map", "odom")[0], (0, 0, 0))
+    assert proc.stop(signal.SIGTERM) == 0
+    wait_gone(pids.values(), timeout=1.0)

@@ -160,3 +160,43 @@ def test_pkg_file_form_and_dry_run_output(pkg, ros1_top, capsys):
         "--publish-frequency 50",
         "/map_odom: robotmodel static-transform-publisher 1 2 0 0 0 0 map odom 100",
     ]
+
+
+def test_jsp_use_gui_and_ros2_description_argument(pkg, tmp_path):
+    path = pkg.launch("jsp.launch", """
+        <launch>
+          <param name="robot_description" textfile="$(find probe_description)/urdf/probe.urdf.xacro"/>
+          <node pkg="joint_state_publisher" type="joint_state_publisher" name="old_gui">
+            <param name="use_gui" value="true"/>
+            <rosparam param="zeros">{shoulder: -0.25}</rosparam>
+          </node>
+        </launch>
+    """)
+    assert argv(plan_of(path, pkg.root, tmp_path)) == {
+        "/old_gui": ("joint-state-publisher-gui", str(pkg.xacro), "--package-path", str(pkg.root),
+                     "--joint=shoulder=-0.25"),
+    }
+    path = pkg.launch("jsp.launch.xml", """
+        <launch>
+          <node pkg="joint_state_publisher" exec="joint_state_publisher" args="$(dirname)/../urdf/probe.urdf.xacro">
+            <param name="rate" value="5"/>
+          </node>
+        </launch>
+    """)
+    assert argv(plan_of(path, pkg.root, tmp_path)) == {
+        "/joint_state_publisher": ("joint-state-publisher", str(pkg.xacro), "--package-path", str(pkg.root),
+                                   "--rate", "5"),
+    }
+
+
+def test_a_node_parameter_of_the_wrong_type_names_file_and_line(pkg, tmp_path):
+    path = pkg.launch("rate.launch", """
+        <launch>
+          <node pkg="joint_state_publisher" type="joint_state_publisher" name="jsp">
+
+            <param name="rate" value="fast"/>
+          </node>
+        </launch>
+    """)
+    with pytest.raises(LaunchError, match=r"rate\.launch:4: parameter 'rate' of /jsp must be a number, got 'fast'"):
+        plan_of(path, pkg.root, tmp_path)
