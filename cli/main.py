@@ -32,6 +32,7 @@ COMMAND_MODULES: tuple[str, ...] = (
     "robotmodel.cli.check_cmd",
     "robotmodel.cli.graphviz_cmd",
     "robotmodel.cli.fk_cmd",
+    "robotmodel.cli.diff_cmd",
     "robotmodel.cli.static_tf_cmd",
     "robotmodel.cli.tf2_echo_cmd",
     "robotmodel.cli.view_frames_cmd",
