@@ -1,83 +1,50 @@
-"""``robotmodel demo``: a short tour of the toolkit on the bundled robots (no server, no files)."""
+"""``robotmodel demo``: the whole pipeline on the bundled diffbot, every part a process on a private bus.
+
+Started and stopped here, nothing by hand: the recorder (MCAP), a static map → odom
+transform, robot_state_publisher and joint_state_publisher on the diffbot (from xacro),
+the odometry example (``robot_controller`` and ``sensor_simulator``, whose wheel angles
+reach joint_state_publisher through ``--source-list /wheel_states``), a live ``tf2_echo
+map base_footprint``, ``view_frames``, and the viewer following the robot, with a
+screenshot of it taken by headless Chromium when one is installed. After the run, one
+offline question is answered from the recording with ``tf2-echo --bag``.
+"""
 
 from __future__ import annotations
 
 import argparse
-import math
 from typing import Any
+
+__all__ = ["register", "run"]
+
+ROBOT = "diffbot.urdf.xacro"
+#: The recorded topics: TF, the robot, and the odometry example's own.
+TOPICS = ("/tf", "/tf_static", "/joint_states", "/robot_description", "/odom", "/cmd_vel")
+#: map → odom, as a localization node would publish it.
+MAP_TO_ODOM = ("1.0", "0.5", "0.0")
 
 
 def register(sub: Any) -> None:
     """Add the ``demo`` subcommand."""
     parser: argparse.ArgumentParser = sub.add_parser(
-        "demo", help="tour the toolkit on the bundled robots: check, FK, robot_state_publisher, TF lookups")
+        "demo", help="run the whole pipeline on the bundled diffbot: publishers, odometry, TF tools, viewer, "
+                     "recording",
+        description="Drive the bundled diffbot with the odometry example while robot_state_publisher, "
+                    "joint_state_publisher, a static map->odom transform, tf2_echo, view_frames, the viewer and "
+                    "a recorder run beside it as processes on a private bus (own port and ROS_DOMAIN_ID). "
+                    "Writes the recording, the frame diagram and a screenshot into a fresh folder, then answers "
+                    "one question from the recording.")
+    parser.add_argument("--duration", type=float, default=35.0, metavar="S",
+                        help="seconds to run (default 35: the odometry pattern takes 30)")
+    parser.add_argument("--no-browser", action="store_true", help="do not open the viewer in the web browser")
+    parser.add_argument("--output", metavar="DIR", help="folder for the files (default ./robotmodel-demo-<time>)")
+    parser.add_argument("--time-scale", type=float, default=1.0, metavar="X",
+                        help="run the odometry example X times faster than real time (default 1)")
     parser.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
-    """Run the tour."""
-    # Imported here so `robotmodel --help` does not load NumPy and Pinocchio.
-    import numpy as np
-    import robotmodel.robots
+    """Start everything, run for --duration (or until Ctrl-C), stop everything, report."""
+    from robotmodel.cli._demo_run import Demo
 
-    from robotmodel.check import lint, tree_report
-    from robotmodel.kinematics import KinematicModel, KinematicState, joint_transforms, static_transforms
-    from robotmodel.model import load
-    from robotmodel.tf import Buffer, Time, make_transform
-
-    print(f"Bundled robots: {', '.join(robotmodel.robots.names())}\n")
-
-    path = robotmodel.robots.path("diffbot.urdf.xacro")
-    desc = load(path)
-    print(f"== check_urdf diffbot.urdf.xacro (xacro expanded without ROS)\n{tree_report(desc)}")
-    findings = lint(desc, base_dir=path.parent)
-    print(f"lint: {len(findings)} finding(s)\n")
-
-    arm = KinematicModel.load(robotmodel.robots.path("arm.urdf.xacro"))
-    values = {"arm_shoulder_joint": 0.6, "arm_elbow_joint": -1.1, "arm_wrist_pitch_joint": 0.5,
-              "gripper_left_finger_joint": 0.02}
-    state = KinematicState(arm).update(values)
-    pose = state.link_pose("gripper_palm_link")
-    print("== forward kinematics (Pinocchio): arm, " + ", ".join(f"{k}={v}" for k, v in values.items()))
-    print(f"gripper_palm_link in {arm.root}: xyz {np.round(pose.translation, 4).tolist()} "
-          f"rpy {np.round(pose.rpy(), 4).tolist()}")
-    fingers = [state.link_matrix(f"gripper_{s}_finger_link")[:3, 3] for s in ("left", "right")]
-    print(f"finger gap (right finger mimics left): {np.linalg.norm(fingers[0] - fingers[1]):.4f} m\n")
-
-    # robot_state_publisher + odometry into a tf2-style buffer, then tf2 lookups.
-    model = KinematicModel(desc)
-    buffer = Buffer()
-    statics = static_transforms(model)
-    for k in range(len(statics.joints)):
-        buffer.set_transform_static(make_transform(statics.parents[k], statics.children[k],
-                                                   statics.translations[k], statics.rotations[k]),
-                                    "robot_state_publisher")
-    buffer.set_transform_static(make_transform("map", "odom", (1.0, 2.0, 0.0)), "static_transform_publisher")
-    start = 1_700_000_000 * 1_000_000_000
-    for i in range(51):  # one second of driving in a circle at 50 Hz
-        t_ns = start + i * 20_000_000
-        yaw = 0.5 * i / 50
-        buffer.set_transform(make_transform("odom", "base_footprint", (math.sin(yaw), 1 - math.cos(yaw), 0.0),
-                                            (0, 0, math.sin(yaw / 2), math.cos(yaw / 2)), t_ns), "odometry")
-        wheels = joint_transforms(model, {"left_wheel_joint": 10.0 * i / 50, "right_wheel_joint": 9.0 * i / 50})
-        for k in range(len(wheels.joints)):
-            buffer.set_transform(make_transform(wheels.parents[k], wheels.children[k], wheels.translations[k],
-                                                wheels.rotations[k], t_ns), "robot_state_publisher")
-    when = Time(nanoseconds=start + 505_000_000)
-    cam = buffer.lookup_transform("map", "camera_link", when)
-    tr, q = cam.transform.translation, cam.transform.rotation
-    print("== TF: where was the camera in the map frame at t = start + 0.505 s? (interpolated)")
-    print(f"translation [{tr.x:.4f}, {tr.y:.4f}, {tr.z:.4f}]  rotation xyzw [{q.x:.4f}, {q.y:.4f}, {q.z:.4f}, "
-          f"{q.w:.4f}]")
-    stamps = np.linspace(start, start + 1_000_000_000, 1000).astype(np.int64)
-    translations, _ = buffer.lookup_transforms("map", "laser_link", stamps)
-    path_length = np.linalg.norm(np.diff(translations, axis=0), axis=1).sum()
-    print(f"laser_link path over 1 s (1000 vectorized lookups): {path_length:.4f} m")
-    try:
-        buffer.lookup_transform("map", "camera_link", Time(nanoseconds=start + 2_000_000_000))
-    except Exception as exc:
-        print(f"asking beyond the data, as tf2: {type(exc).__name__}: {exc}")
-    print("\n== frames (tf2's allFramesAsYAML, abridged)")
-    for child, parent in buffer.frames().items():
-        print(f"{child} -> parent {parent}")
-    return 0
+    code: int = Demo(args).run()
+    return code

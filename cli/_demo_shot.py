@@ -1,0 +1,35 @@
+"""``python -m robotmodel.cli._demo_shot URL OUT.png``: the demo's screenshot of the live viewer, as a child.
+
+A process of its own, so the browser's start and the page's first complete frame overlap
+the demo's run instead of holding it up; the demo reaps it like every other child.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+import time
+from pathlib import Path
+
+
+def main(argv: list[str]) -> int:
+    """Render URL in headless Chromium and write the PNG (atomically) to OUT."""
+    from robotmodel.errors import RobotModelError
+    from robotmodel.viewer import screenshot
+
+    url, out = argv[0], Path(argv[1])
+    began = time.monotonic()
+    try:
+        png = screenshot(url, width=1280, height=800, timeout=90.0)
+    except RobotModelError as exc:
+        print(f"no screenshot: {' '.join(str(exc).splitlines())}", flush=True)
+        return 1
+    tmp = out.with_name(f".{out.name}.part")
+    tmp.write_bytes(png)
+    os.replace(tmp, out)
+    print(f"wrote {out} in {time.monotonic() - began:.1f} s", flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

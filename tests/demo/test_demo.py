@@ -1,0 +1,169 @@
+"""``robotmodel demo`` as a user runs it: files left behind, the numbers it prints, nothing left running.
+
+The recording is read back here with rosbags (not robotmodel's reader), and the offline
+answer the demo prints is recomputed from its raw /tf and /tf_static messages.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+from livebus import Proc
+from rosbags.highlevel import AnyReader
+
+DEMO = [sys.executable, "-m", "robotmodel.cli.main", "demo", "--no-browser"]
+
+
+def _env() -> dict[str, str]:
+    env = dict(os.environ)
+    env["PYTHONUNBUFFERED"] = "1"
+    # The demo must pick its own bus whatever the caller's environment says.
+    env["ROBOTMODEL_ZENOH_PORT"] = "7447"
+    env["ROS_DOMAIN_ID"] = "0"
+    return env
+
+
+def _port(stdout: str) -> str:
+    m = re.search(r"private bus \(port (\d+), ROS_DOMAIN_ID (\d+)\)", stdout)
+    assert m, stdout
+    assert m.group(1) != "7447" and m.group(2) != "0"
+    return m.group(1)
+
+
+def _leftovers(port: str) -> list[str]:
+    """Processes still running with the demo's bus in their environment."""
+    found = []
+    needle = f"ROBOTMODEL_ZENOH_PORT={port}".encode()
+    for entry in Path("/proc").iterdir():
+        if not entry.name.isdigit():
+            continue
+        try:
+            environ = (entry / "environ").read_bytes()
+            cmdline = (entry / "cmdline").read_bytes().replace(b"\0", b" ").decode(errors="replace")
+        except OSError:
+            continue
+        if needle in environ.split(b"\0"):
+            found.append(f"{entry.name}: {cmdline}")
+    return found
+
+
+def _no_leftovers(port: str) -> None:
+    deadline = time.monotonic() + 10
+    while _leftovers(port) and time.monotonic() < deadline:
+        time.sleep(0.2)
+    assert _leftovers(port) == []
+
+
+def _read(mcap: Path) -> tuple[dict[str, int], list[tuple[int, str, str, tuple[float, ...], bool]]]:
+    counts: dict[str, int] = {}
+    transforms = []
+    with AnyReader([mcap]) as reader:
+        for conn, _t, raw in reader.messages():
+            counts[conn.topic] = counts.get(conn.topic, 0) + 1
+            if conn.topic in ("/tf", "/tf_static"):
+                for t in reader.deserialize(raw, conn.msgtype).transforms:
+                    stamp = t.header.stamp.sec * 10**9 + t.header.stamp.nanosec
+                    tr, q = t.transform.translation, t.transform.rotation
+                    transforms.append((stamp, t.header.frame_id, t.child_frame_id, (tr.x, tr.y, tr.z, q.z, q.w),
+                                       conn.topic == "/tf_static"))
+    return counts, transforms
+
+
+def _expected_offline(transforms: list, at_ns: int) -> tuple[float, float, float]:
+    """map -> base_footprint at ``at_ns``: the static map -> odom, then odom -> base_footprint interpolated."""
+    static = [v for _s, p, c, v, is_static in transforms if (p, c) == ("map", "odom") and is_static]
+    assert static, "no map -> odom on /tf_static"
+    mx, my, _mz, mqz, mqw = static[-1]
+    myaw = 2 * math.atan2(mqz, mqw)
+    odom = sorted((s, v) for s, p, c, v, _ in transforms if (p, c) == ("odom", "base_footprint"))
+    before = max((o for o in odom if o[0] <= at_ns), default=None)
+    after = min((o for o in odom if o[0] >= at_ns), default=None)
+    assert before is not None and after is not None
+    f = 0.0 if after[0] == before[0] else (at_ns - before[0]) / (after[0] - before[0])
+    x = before[1][0] + f * (after[1][0] - before[1][0])
+    y = before[1][1] + f * (after[1][1] - before[1][1])
+    yaw0, yaw1 = (2 * math.atan2(v[3], v[4]) for v in (before[1], after[1]))
+    yaw = yaw0 + f * math.remainder(yaw1 - yaw0, 2 * math.pi)
+    return (mx + math.cos(myaw) * x - math.sin(myaw) * y, my + math.sin(myaw) * x + math.cos(myaw) * y,
+            math.remainder(myaw + yaw, 2 * math.pi))
+
+
+def test_demo_runs_headless_and_leaves_its_files(tmp_path: Path) -> None:
+    out = tmp_path / "demo"
+    done = subprocess.run([*DEMO, "--duration", "10", "--output", str(out)], env=_env(), cwd=tmp_path,
+                          capture_output=True, text=True, timeout=300, check=False)
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "Traceback" not in done.stderr, done.stderr
+    port = _port(done.stdout)
+    _no_leftovers(port)
+    listing = done.stdout[done.stdout.index(f"files in {out.resolve()}/:"):]
+    # The recording: every topic of the pipeline, readable by rosbags.
+    mcap = out / "demo.mcap"
+    assert "demo.mcap" in listing
+    counts, transforms = _read(mcap)
+    assert {"/tf", "/tf_static", "/joint_states", "/robot_description", "/odom", "/cmd_vel"} <= set(counts)
+    assert counts["/odom"] > 50 and counts["/cmd_vel"] > 20
+    # view_frames' diagram has the whole tree, with its broadcasters.
+    gv = (out / "frames.gv").read_text()
+    for parent, child in (("map", "odom"), ("odom", "base_footprint"), ("base_footprint", "base_link"),
+                          ("base_link", "left_wheel"), ("base_link", "right_wheel")):
+        assert f'"{parent}" -> "{child}"' in gv
+    assert "Broadcaster: /sensor_simulator" in gv and "Broadcaster: /robot_state_publisher" in gv
+    if shutil.which("dot"):
+        assert (out / "frames.pdf").read_bytes().startswith(b"%PDF")
+    if shutil.which("chromium"):
+        png = (out / "viewer.png").read_bytes()
+        assert png.startswith(b"\x89PNG\r\n\x1a\n") and len(png) > 10_000
+        assert "viewer.png" in listing
+    # The live tf2_echo line came from the bus, and moved as the robot drove.
+    live = re.findall(r"tf2_echo map base_footprint: at \S+: translation \[([-\d.]+), ([-\d.]+)", done.stdout)
+    assert len(live) >= 2 and float(live[-1][0]) > float(live[0][0])
+    # The offline answer: 5 s after the first recorded transform, recomputed from the raw messages.
+    m = re.search(r"--time \+5\nAt time (\d+)\.(\d+)\n- Translation: \[([-\d.]+), ([-\d.]+), ([-\d.]+)\]\n"
+                  r".*\n- Rotation: in RPY \(radian\) \[([-\d.]+), ([-\d.]+), ([-\d.]+)\]", done.stdout)
+    assert m, done.stdout
+    first = min(t[0] for t in transforms if not t[4])  # "+5": after the first /tf (dynamic) stamp
+    at_ns = int(m.group(1)) * 10**9 + int(m.group(2).ljust(9, "0")[:9])
+    assert abs(at_ns - (first + 5 * 10**9)) < 1000
+    x, y, yaw = _expected_offline(transforms, at_ns)
+    assert float(m.group(3)) == pytest.approx(x, abs=0.0006)
+    assert float(m.group(4)) == pytest.approx(y, abs=0.0006)
+    assert float(m.group(8)) == pytest.approx(yaw, abs=0.0006)
+
+
+def test_ctrl_c_stops_everything_and_keeps_the_recording(tmp_path: Path) -> None:
+    out = tmp_path / "demo"
+    proc = Proc([*DEMO, "--duration", "120", "--output", str(out)], _env(), tmp_path)
+    try:
+        header = proc.wait_line(r"private bus \(port (\d+)", timeout=60)
+        proc.wait_line(r"^viewer: http://127\.0\.0\.1:\d+/", timeout=90)
+        proc.wait_line(r"^tf2_echo map base_footprint", timeout=60)
+        code = proc.stop(signal.SIGINT, timeout=60)
+    finally:
+        proc.kill()
+    assert code == 0, "\n".join(proc.out + proc.err)
+    _no_leftovers(header.group(1))
+    counts, _ = _read(out / "demo.mcap")
+    assert counts.get("/odom", 0) > 0 and counts.get("/tf_static", 0) > 0
+    assert any(line.startswith("files in ") for line in proc.out)
+
+
+def test_bad_options_are_one_line_errors(tmp_path: Path) -> None:
+    busy = tmp_path / "busy"
+    busy.mkdir()
+    (busy / "keep.txt").write_text("mine")
+    for args, text in ((["--output", str(busy)], "already exists and is not an empty folder"),
+                       (["--duration", "0", "--output", str(tmp_path / "x")], "--duration must be greater than 0")):
+        done = subprocess.run([*DEMO, *args], env=_env(), capture_output=True, text=True, timeout=60, check=False)
+        assert done.returncode == 1
+        assert done.stderr.strip().count("\n") == 0 and text in done.stderr, done.stderr
+    assert (busy / "keep.txt").read_text() == "mine" and sorted(p.name for p in busy.iterdir()) == ["keep.txt"]
