@@ -5,6 +5,7 @@ from __future__ import annotations
 import logging
 import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -290,3 +291,27 @@ def test_progress_bar_on_a_terminal(tmp_path: Path) -> None:
     assert f"meshes [{'#' * 30}] {meshes}/{meshes}" in text
     assert f"meshes [{'.' * 30}] 0/{meshes}" in text
     assert f"loaded {meshes} meshes (0 from the cache)" in text
+
+
+def test_open_hands_the_url_to_the_users_browser(tmp_path: Path) -> None:
+    import signal
+    import time
+
+    opened = tmp_path / "opened.txt"
+    browser = tmp_path / "browser.py"
+    browser.write_text(f"import sys, pathlib\npathlib.Path({str(opened)!r}).write_text(sys.argv[1])\n")
+    env = dict(os.environ, BROWSER=f"{sys.executable} {browser} %s")
+    proc = subprocess.Popen([sys.executable, "-m", "robotmodel.cli.main", "view", str(BUNDLED / "diffbot.urdf.xacro"),
+                             "--port", "0", "--open"], env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            text=True)
+    try:
+        assert proc.stdout is not None
+        url = proc.stdout.readline().strip()
+        deadline = time.monotonic() + 30
+        while not (opened.exists() and opened.read_text()) and time.monotonic() < deadline:
+            time.sleep(0.05)
+        assert opened.read_text() == url
+        assert re.fullmatch(r"http://127\.0\.0\.1:\d+/", url)
+    finally:
+        proc.send_signal(signal.SIGINT)
+        assert proc.wait(timeout=30) == 0
