@@ -114,7 +114,7 @@ def robot_fraction(browser: Browser, png: bytes, points: list[np.ndarray]) -> tu
 
 
 def loopback_only(pid: int) -> list[str]:
-    """Addresses the process listens on (TCP and UDP-bound, IPv4 and IPv6), from /proc."""
+    """Addresses the process listens on (TCP listeners and bound UDP sockets, IPv4 and IPv6), from /proc."""
     inodes = set()
     for fd in Path(f"/proc/{pid}/fd").iterdir():
         try:
@@ -124,12 +124,14 @@ def loopback_only(pid: int) -> list[str]:
         if target.startswith("socket:["):
             inodes.add(target[8:-1])
     found = []
-    for table, family in (("tcp", socket.AF_INET), ("tcp6", socket.AF_INET6)):
+    tables = (("tcp", socket.AF_INET), ("tcp6", socket.AF_INET6), ("udp", socket.AF_INET), ("udp6", socket.AF_INET6))
+    for table, family in tables:
         lines = Path(f"/proc/{pid}/net/{table}").read_text().splitlines()[1:]
         for line in lines:
             fields = line.split()
             local, state, inode = fields[1], fields[3], fields[9]
-            if state != "0A" or inode not in inodes:  # 0A = LISTEN
+            # TCP: sockets in LISTEN (0A); UDP: every bound socket receives.
+            if inode not in inodes or (table.startswith("tcp") and state != "0A"):
                 continue
             addr_hex, port_hex = local.split(":")
             raw = bytes.fromhex(addr_hex)
