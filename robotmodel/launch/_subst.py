@@ -201,7 +201,14 @@ def _count(sub: Sub, words: list[str], ctx: SubstContext, low: int, high: int) -
 
 def _arg(sub: Sub, words: list[str], ctx: SubstContext) -> str:
     _count(sub, words, ctx, 1, 1)
-    return _lookup(words[0], ctx)
+    value = _lookup(words[0], ctx)
+    if ctx.dialect is Dialect.ROS1 and "$(find " in value:
+        # roslaunch resolves $(find) after $(arg), in the text the args produced: so
+        # model:='$(find pkg)/urdf/x.urdf' on the command line works, as its tutorials show.
+        parts = parse(value, ctx)
+        value = "".join(p if isinstance(p, str) else _find(p, [resolve_parts(a, ctx) for a in p.args], ctx)
+                        if p.name == "find" else f"$({p.name} {p.raw})" for p in parts)
+    return value
 
 
 def _lookup(name: str, ctx: SubstContext) -> str:

@@ -200,3 +200,18 @@ def test_a_node_parameter_of_the_wrong_type_names_file_and_line(pkg, tmp_path):
     """)
     with pytest.raises(LaunchError, match=r"rate\.launch:4: parameter 'rate' of /jsp must be a number, got 'fast'"):
         plan_of(path, pkg.root, tmp_path)
+
+
+def test_ros1_find_inside_a_command_line_arg_is_resolved(pkg, ros1_top, tmp_path):
+    # As urdf_tutorial's ROS 1 instructions: roslaunch ... model:='$(find pkg)/urdf/x.urdf'.
+    other = pkg.dir / "urdf" / "other.urdf.xacro"
+    other.write_text(pkg.xacro.read_text())
+    path = pkg.launch("model.launch", """
+        <launch>
+          <arg name="model" default="$(find probe_description)/urdf/probe.urdf.xacro"/>
+          <param name="robot_description" command="xacro $(arg model)"/>
+          <node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>
+        </launch>
+    """)
+    plan = plan_of(path, pkg.root, tmp_path, model="$(find probe_description)/urdf/other.urdf.xacro")
+    assert argv(plan)["/rsp"] == ("robot-state-publisher", str(other), "--package-path", str(pkg.root))
