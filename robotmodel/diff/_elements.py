@@ -105,8 +105,15 @@ def _shapes(fields: Fields, kind: str, old: Sequence[Visual | Collision], new: S
         fields.text(f"{prefix}.name", a.name, b.name)
         if isinstance(a, Visual) and isinstance(b, Visual):
             ma, mb = a.material, b.material
-            fields.text(f"{prefix}.material", None if ma is None else ma.name, None if mb is None else mb.name)
-            fields.vector(f"{prefix}.material.color", _color(ma, materials[0]), _color(mb, materials[1]), "rgba")
+            names = (None if ma is None else ma.name, None if mb is None else mb.name)
+            fields.text(f"{prefix}.material", *names)
+            # Under one name a colour change is the named material's (reported once, in materials)
+            # unless the visual gives its own; under a new name, the colour the visual now shows.
+            if names[0] == names[1]:
+                fields.vector(f"{prefix}.material.color", None if ma is None else ma.color,
+                              None if mb is None else mb.color, "rgba")
+            else:
+                fields.vector(f"{prefix}.material.color", _color(ma, materials[0]), _color(mb, materials[1]), "rgba")
             fields.text(f"{prefix}.material.texture", None if ma is None else ma.texture,
                         None if mb is None else mb.texture)
     for i in range(len(new), len(old)):
