@@ -117,7 +117,8 @@ class _Mapper:
             return (str(param.textfile),)
         self.written += 1
         path = self.workdir / f"robot_description_{self.written}.urdf"
-        path.write_text(param.value or "", encoding="utf-8")
+        # Leading blanks go: urdfdom's XML parser skips them, an XML declaration may not follow them here.
+        path.write_text((param.value or "").lstrip(), encoding="utf-8")
         return (str(path),)
 
 

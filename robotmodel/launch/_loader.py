@@ -123,7 +123,7 @@ class _Loader:
         ctx = self._ctx(scope, elem)
         cond_if, cond_unless = self._attr(scope, elem, "if"), self._attr(scope, elem, "unless")
         if cond_if is not None and cond_unless is not None and scope.dialect is Dialect.ROS1:
-            raise ctx.error(f"<{elem.tag}> cannot set both 'if' and 'unless'")
+            raise ctx.error(f"<{elem.tag}>: cannot set both 'if' and 'unless' on the same tag")
         if cond_if is not None and not truth(cond_if, ctx, "if"):
             return False
         return not (cond_unless is not None and truth(cond_unless, ctx, "unless"))
@@ -168,9 +168,11 @@ class _Loader:
                 scope.args[name] = value
             elif name not in scope.args or scope.args[name] is None:
                 if default is None:
-                    given = ", ".join(sorted(scope.args))
+                    # ros2 launch includes the top file too, so the text is the include's either way.
+                    given = ", ".join(scope.passed)
                     desc = elem.attrib.get("description", "no description given")
-                    raise ctx.error(f"missing required argument '{name}' (description: '{desc}'), given: [{given}]")
+                    raise ctx.error(f"Included launch description missing required argument '{name}' "
+                                    f"(description: '{desc}'), given: [{given}]")
                 scope.args[name] = default
             return
         if name in scope.declared:

@@ -1,7 +1,7 @@
 """Substitutions in launch attributes: ``$(name arg ...)``, nested, for both dialects.
 
 ROS 1 (roslaunch): ``arg``, ``find``, ``env``, ``optenv``, ``anon``, ``dirname``, ``eval``.
-ROS 2 (launch frontends): ``var``, ``find-pkg-share``, ``find-pkg-prefix``, ``env``,
+ROS 2 (launch frontends): ``var``, ``find-pkg-share``, ``find-pkg-prefix``, ``find-exec``, ``env``,
 ``anon``, ``dirname``, ``filename``, ``eval``, ``command``, ``not``, ``and``, ``or``,
 ``equals``. ``$(command ...)`` runs nothing but xacro, expanded in-process.
 
@@ -17,143 +17,16 @@ import hashlib
 import math
 import os
 import shlex
-from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
+from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any
 
 from robotmodel.errors import LaunchError, RobotModelError
 from robotmodel.launch._eval import EvalError, safe_eval
 from robotmodel.launch._model import Dialect, XacroSource
+from robotmodel.launch._syntax import Sub, SubstContext, parse
 
 __all__ = ["Sub", "SubstContext", "parse", "parse_xacro_command", "resolve", "resolve_parts", "truth"]
-
-
-@dataclass(frozen=True)
-class Sub:
-    """One ``$(name args)``: each argument a list of text and nested substitutions; ``raw`` for eval."""
-
-    name: str
-    args: tuple[tuple[str | Sub, ...], ...]
-    raw: str
-
-
-Parts = list["str | Sub"]
-
-
-@dataclass
-class SubstContext:
-    """What substitutions see: the file, the line being read, the dialect and the arguments in scope.
-
-    ``args`` maps names to values; None marks a ROS 1 arg declared without a value (an
-    error only when used).
-    """
-
-    path: Path
-    line: int
-    dialect: Dialect
-    args: Mapping[str, str | None]
-    package_paths: Sequence[Path]
-
-    def error(self, text: str) -> LaunchError:
-        """A LaunchError starting with this file and line."""
-        return LaunchError(f"{self.path}:{self.line}: {text}")
-
-
-def parse(text: str, ctx: SubstContext) -> Parts:
-    """Split ``text`` into literal text and substitutions; malformed syntax raises LaunchError."""
-    parts, pos = _parse_text(text, 0, ctx, top=True)
-    del pos
-    return parts
-
-
-def _parse_text(text: str, pos: int, ctx: SubstContext, *, top: bool) -> tuple[Parts, int]:
-    parts: Parts = []
-    buf: list[str] = []
-    while pos < len(text):
-        if text.startswith("$(", pos):
-            if buf:
-                parts.append("".join(buf))
-                buf = []
-            sub, pos = _parse_sub(text, pos, ctx)
-            parts.append(sub)
-            continue
-        if not top:
-            break
-        buf.append(text[pos])
-        pos += 1
-    if buf:
-        parts.append("".join(buf))
-    return parts, pos
-
-
-def _parse_sub(text: str, start: int, ctx: SubstContext) -> tuple[Sub, int]:
-    pos = start + 2
-    name_end = pos
-    while name_end < len(text) and not text[name_end].isspace() and text[name_end] != ")":
-        name_end += 1
-    name = text[pos:name_end]
-    if not name:
-        raise ctx.error(f"empty substitution in '{text}'")
-    raw_end = _matching_paren(text, name_end, ctx, text[start:])
-    raw = text[name_end:raw_end].strip()
-    if name == "eval":
-        return Sub(name, (), raw), raw_end + 1
-    args: list[tuple[str | Sub, ...]] = []
-    pos = name_end
-    quoting = ctx.dialect is Dialect.ROS2
-    while True:
-        while pos < raw_end and text[pos].isspace():
-            pos += 1
-        if pos >= raw_end:
-            break
-        arg: Parts = []
-        buf: list[str] = []
-        while pos < raw_end and not text[pos].isspace():
-            ch = text[pos]
-            if quoting and ch in "'\"":
-                close = text.find(ch, pos + 1, raw_end)
-                if close < 0:
-                    raise ctx.error(f"unterminated quote in '{text[start:raw_end + 1]}'")
-                inner = parse(text[pos + 1:close], ctx)
-                if buf:
-                    arg.append("".join(buf))
-                    buf = []
-                arg.extend(inner)
-                pos = close + 1
-            elif text.startswith("$(", pos):
-                if buf:
-                    arg.append("".join(buf))
-                    buf = []
-                sub, pos = _parse_sub(text, pos, ctx)
-                arg.append(sub)
-            else:
-                buf.append(ch)
-                pos += 1
-        if buf:
-            arg.append("".join(buf))
-        args.append(tuple(arg))
-    return Sub(name, tuple(args), raw), raw_end + 1
-
-
-def _matching_paren(text: str, pos: int, ctx: SubstContext, shown: str) -> int:
-    depth = 0
-    quote = ""
-    while pos < len(text):
-        ch = text[pos]
-        if quote:
-            if ch == quote:
-                quote = ""
-        elif ch in "'\"" and ctx.dialect is Dialect.ROS2:
-            quote = ch
-        elif ch == "(":
-            depth += 1
-        elif ch == ")":
-            if depth == 0:
-                return pos
-            depth -= 1
-        pos += 1
-    raise ctx.error(f"unterminated substitution '{shown}'")
 
 
 def resolve(text: str, ctx: SubstContext) -> str:
@@ -240,6 +113,18 @@ def _find_prefix(sub: Sub, words: list[str], ctx: SubstContext) -> str:
     share = Path(_find(sub, words, ctx))
     # An installed package's prefix is two levels above <prefix>/share/<pkg>; a source tree has none.
     return str(share.parent.parent) if share.parent.name == "share" else str(share)
+
+
+def _find_exec(sub: Sub, words: list[str], ctx: SubstContext) -> str:
+    import shutil
+
+    _count(sub, words, ctx, 1, 1)
+    found = shutil.which(words[0])
+    if found is not None:
+        return found
+    if words[0] in _XACRO_PROGRAMS:
+        return words[0]  # xacro runs in-process; only its name matters
+    raise ctx.error(f"executable '{words[0]}' not found on the PATH")
 
 
 def _env(sub: Sub, words: list[str], ctx: SubstContext) -> str:
@@ -373,7 +258,8 @@ _ROS1: dict[str, Handler] = {
     "eval": _eval1,
 }
 _ROS2: dict[str, Handler] = {
-    "var": _arg, "find-pkg-share": _find, "find-pkg-prefix": _find_prefix, "env": _env, "anon": _anon,
+    "var": _arg, "find-pkg-share": _find, "find-pkg-prefix": _find_prefix, "find-exec": _find_exec, "env": _env,
+    "anon": _anon,
     "dirname": _dirname, "filename": _filename, "eval": _eval2, "command": _command, "not": _not,
     "and": _and, "or": _or, "equals": _equals,
 }

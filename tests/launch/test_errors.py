@@ -54,7 +54,8 @@ CASES = {
         <launch>
           <arg name="model" description="the robot"/>
         </launch>
-    """, 2, "missing required argument 'model' (description: 'the robot'), given: []"),
+    """, 2, "Included launch description missing required argument 'model' (description: 'the robot'), "
+            "given: [other]"),
     "not_xacro": ("bad.launch", """
         <launch>
           <param name="robot_description" command="cat /etc/hostname"/>
@@ -99,7 +100,7 @@ def test_bad_launch_file_gives_one_line_naming_file_and_line(pkg, capsys, case):
         </launch>
     """)
     path = pkg.launch(name, text)
-    code, err, out = run_cli(capsys, str(path), "--package-path", str(pkg.root))
+    code, err, out = run_cli(capsys, str(path), "--package-path", str(pkg.root), "other:=1")
     assert code != 0
     assert out == ""
     assert len(err) == 1, err
@@ -154,3 +155,11 @@ def test_as_a_process_exit_code_and_no_traceback(pkg):
     assert proc.returncode == 1
     assert proc.stderr.splitlines() == [f"robotmodel launch: error: {path}:3: invalid XML: not well-formed "
                                         "(invalid token) (column 1)"]
+
+
+def test_python_launch_file_is_refused_in_one_line(pkg, capsys):
+    path = pkg.launch("display.launch.py", "from launch import LaunchDescription\n")
+    code, err, _ = run_cli(capsys, str(path))
+    assert code == 1
+    assert err == [f"robotmodel launch: error: {path}: only XML launch files are read (.launch, .launch.xml, "
+                   ".xml), not Python or YAML"]

@@ -215,3 +215,35 @@ def test_ros1_find_inside_a_command_line_arg_is_resolved(pkg, ros1_top, tmp_path
     """)
     plan = plan_of(path, pkg.root, tmp_path, model="$(find probe_description)/urdf/other.urdf.xacro")
     assert argv(plan)["/rsp"] == ("robot-state-publisher", str(other), "--package-path", str(pkg.root))
+
+
+def test_ros2_find_exec_xacro_command(pkg, tmp_path):
+    path = pkg.launch("exec.launch.xml", """
+        <launch>
+          <node pkg="robot_state_publisher" exec="robot_state_publisher">
+            <param name="robot_description"
+                   value="$(command '$(find-exec xacro) $(find-pkg-share probe_description)/urdf/probe.urdf.xacro')"/>
+          </node>
+        </launch>
+    """)
+    assert argv(plan_of(path, pkg.root, tmp_path)) == {
+        "/robot_state_publisher": ("robot-state-publisher", str(pkg.xacro), "--package-path", str(pkg.root)),
+    }
+
+
+def test_ros2_command_inside_a_longer_value_is_expanded_in_process(pkg, tmp_path):
+    path = pkg.launch("text.launch.xml", """
+        <launch>
+          <node pkg="robot_state_publisher" exec="robot_state_publisher">
+            <param name="robot_description" value=" $(command 'xacro $(dirname)/../urdf/probe.urdf.xacro prefix:=t_')"/>
+          </node>
+        </launch>
+    """)
+    written = Path(argv(plan_of(path, pkg.root, tmp_path))["/robot_state_publisher"][1])
+    assert written.parent == tmp_path
+    import xml.etree.ElementTree as ET
+
+    text = written.read_text()
+    assert text.startswith("<?xml")  # the value's leading blank dropped, so the declaration still parses
+    links = [e.get("name") for e in ET.fromstring(text.encode()).iter("link")]
+    assert links == ["t_base_link", "t_arm", "t_tool"]
