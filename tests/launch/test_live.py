@@ -211,3 +211,19 @@ def test_sensors_launch_shape_runs_what_it_can(live, pkg):
         assert np.allclose(wait_pose(buffer, "map", "odom")[0], (0, 0, 0))
     assert proc.stop(signal.SIGTERM) == 0
     wait_gone(pids.values(), timeout=1.0)
+
+
+def test_required_node_exiting_brings_the_launch_down(live, pkg):
+    path = pkg.launch("required.launch", """
+        <launch>
+          <param name="robot_description" textfile="$(find probe_description)/urdf/probe.urdf.xacro"/>
+          <node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>
+          <node pkg="tf2_ros" type="static_transform_publisher" name="broken" args="1 2 map" required="true"/>
+        </launch>
+    """)
+    proc = launch(live, str(path), "--package-path", str(pkg.root))
+    pids = started(proc, 2)
+    assert proc.popen.wait(60) == 1
+    proc.wait_line(r"^\[broken-2\] process has died \[pid \d+, exit code 1\]$", stream="err")
+    proc.wait_line(r"^\[broken-2\] required process has exited, shutting down$", stream="err")
+    wait_gone(pids.values(), timeout=1.0)
