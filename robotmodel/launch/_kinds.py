@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import shlex
 from collections.abc import Mapping, Sequence
+from dataclasses import replace
 from pathlib import Path
 
 import yaml
@@ -32,6 +33,7 @@ _JSP = {("joint_state_publisher", "joint_state_publisher")}
 _JSP_GUI = {("joint_state_publisher_gui", "joint_state_publisher_gui")}
 _STATIC = {("tf", "static_transform_publisher"), ("tf2_ros", "static_transform_publisher")}
 _RVIZ = {("rviz", "rviz"), ("rviz2", "rviz2")}
+_JSP_PARAMS = frozenset({"use_gui", "rate", "zeros", "source_list"})
 
 
 def build_plan(launch: LaunchFile, workdir: Path, *, package_paths: Sequence[Path] = (),
@@ -79,6 +81,8 @@ class _Mapper:
             return ProcessSpec(node.full_name, "robot_state_publisher",
                                ("robot-state-publisher", *description, *self._paths(), *_rsp_options(node)),
                                node.required)
+        if key in _JSP | _JSP_GUI:
+            node = self._jsp_params(node)
         if key in _JSP and not _flag(node, "use_gui"):
             return ProcessSpec(node.full_name, "joint_state_publisher",
                                ("joint-state-publisher", *description, *self._paths(), *_jsp_options(node)),
@@ -87,6 +91,19 @@ class _Mapper:
         return ProcessSpec(node.full_name, "joint_state_publisher_gui",
                            ("joint-state-publisher-gui", *description, *self._paths(), *joints, *self._page()),
                            node.required)
+
+    def _jsp_params(self, node: NodeDecl) -> NodeDecl:
+        # ROS 1's joint_state_publisher reads each parameter as ~name, else as name in its
+        # namespace: display.launch files of that era set use_gui at the top level.
+        merged = dict(node.params)
+        prefix = node.namespace.rstrip("/") + "/"
+        for full, param in self.params.items():
+            if not full.startswith(prefix) or "/" in full[len(prefix):]:
+                continue
+            name = full[len(prefix):]
+            if name.split(".")[0] in _JSP_PARAMS and name not in merged:
+                merged[name] = param
+        return replace(node, params=merged)
 
     def _page(self) -> tuple[str, ...]:
         # No --port: each page binds the first free port from 7000 up, so pages never race for one.

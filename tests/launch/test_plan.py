@@ -247,3 +247,22 @@ def test_ros2_command_inside_a_longer_value_is_expanded_in_process(pkg, tmp_path
     assert text.startswith("<?xml")  # the value's leading blank dropped, so the declaration still parses
     links = [e.get("name") for e in ET.fromstring(text.encode()).iter("link")]
     assert links == ["t_base_link", "t_arm", "t_tool"]
+
+
+def test_ros1_jsp_reads_use_gui_and_rate_from_its_namespace(pkg, tmp_path):
+    # The kinetic-era display.launch: <param name="use_gui"> at the top level, not in the node.
+    path = pkg.launch("old_display.launch", """
+        <launch>
+          <arg name="gui" default="true"/>
+          <param name="robot_description" command="$(find xacro)/xacro --inorder '$(find probe_description)/urdf/probe.urdf.xacro'"/>
+          <param name="use_gui" value="$(arg gui)"/>
+          <group ns="other"><param name="rate" value="99"/></group>
+          <node name="joint_state_publisher" pkg="joint_state_publisher" type="joint_state_publisher"/>
+        </launch>
+    """)
+    assert argv(plan_of(path, pkg.root, tmp_path)) == {
+        "/joint_state_publisher": ("joint-state-publisher-gui", str(pkg.xacro), "--package-path", str(pkg.root)),
+    }
+    assert argv(plan_of(path, pkg.root, tmp_path, gui="false")) == {
+        "/joint_state_publisher": ("joint-state-publisher", str(pkg.xacro), "--package-path", str(pkg.root)),
+    }
