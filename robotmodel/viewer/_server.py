@@ -241,11 +241,15 @@ class ViewerServer:
             return
         self._loop = None
 
-        def stop() -> None:
-            if self._http is not None:
-                self._http.stop()
+        async def stop() -> None:
             for client in list(self._clients):
                 client.close()
+            if self._http is not None:
+                self._http.stop()
+                # Kept-alive browser connections too: left open with nobody reading, a reload
+                # against a viewer restarted on the same port would wait on them forever.
+                with contextlib.suppress(asyncio.TimeoutError):
+                    await asyncio.wait_for(self._http.close_all_connections(), 2.0)
             asyncio.get_event_loop().stop()
 
         loop.add_callback(stop)

@@ -70,3 +70,28 @@ def test_pages_from_other_origins_are_refused() -> None:
                                                 headers={"Origin": "http://evil.example"}))
         with pytest.raises(HTTPClientError):
             asyncio.run(connect())
+
+
+def test_close_drops_kept_alive_connections() -> None:
+    # A browser keeps its HTTP connection open; if closing the viewer left it open with
+    # nobody reading, a reload against a restarted viewer on the same port would hang.
+    import http.client
+
+    viewer = Viewer(load(PANDA), port=0)
+    conn = http.client.HTTPConnection("127.0.0.1", viewer.port, timeout=10)
+    conn.request("GET", "/")
+    response = conn.getresponse()
+    assert response.status == 200
+    response.read()
+    sock = conn.sock
+    assert sock is not None
+    viewer.close()
+    sock.settimeout(5)
+    try:
+        data = sock.recv(1)
+    except TimeoutError:
+        pytest.fail("the connection was left open after close()")
+    except ConnectionResetError:
+        data = b""
+    assert data == b""
+    conn.close()
