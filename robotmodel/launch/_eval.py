@@ -20,6 +20,7 @@ __all__ = ["EvalError", "safe_eval"]
 
 _MAX_LEN = 1 << 20
 _MAX_POW = 256
+_MAX_DEPTH = 100
 
 _BINOPS: dict[type[ast.operator], Callable[[Any, Any], Any]] = {
     ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul, ast.Div: operator.truediv,
@@ -50,6 +51,8 @@ def safe_eval(text: str, names: Mapping[str, Any], functions: Mapping[str, Calla
         tree = ast.parse(text.strip(), mode="eval")
     except SyntaxError as exc:
         raise EvalError(f"invalid expression '{text.strip()}': {exc.msg}") from None
+    except (RecursionError, MemoryError, ValueError) as exc:
+        raise EvalError(f"invalid expression: {type(exc).__name__}") from None
     interp = _Interpreter(names, {**_SAFE_FUNCS, **functions})
     try:
         return interp.visit(tree.body)
@@ -63,12 +66,19 @@ class _Interpreter:
     def __init__(self, names: Mapping[str, Any], functions: Mapping[str, Callable[..., Any]]) -> None:
         self.names = names
         self.functions = functions
+        self.depth = 0
 
     def visit(self, node: ast.AST) -> Any:
         method = getattr(self, f"_{type(node).__name__.lower()}", None)
         if method is None:
             raise EvalError(f"'{ast.unparse(node)}' is not allowed in $(eval)")
-        return _bounded(method(node))
+        if self.depth >= _MAX_DEPTH:
+            raise EvalError(f"expression nested too deep (over {_MAX_DEPTH} levels)")
+        self.depth += 1
+        try:
+            return _bounded(method(node))
+        finally:
+            self.depth -= 1
 
     def _constant(self, node: ast.Constant) -> Any:
         return node.value
@@ -98,6 +108,9 @@ class _Interpreter:
             for seq, count in ((left, right), (right, left)):
                 if isinstance(seq, str | list | tuple) and isinstance(count, int) and len(seq) * count > _MAX_LEN:
                     raise EvalError("result too large")
+        if isinstance(node.op, ast.Mod) and isinstance(left, str):
+            # printf-style formatting can pad to any width ('%999999999s').
+            raise EvalError(f"string formatting in '{ast.unparse(node)}' is not allowed in $(eval)")
         op = _BINOPS.get(type(node.op))
         if op is None:
             raise EvalError(f"operator in '{ast.unparse(node)}' is not allowed in $(eval)")
@@ -157,10 +170,22 @@ class _Interpreter:
         if isinstance(func, ast.Attribute):
             target = self.visit(func.value)
             if isinstance(target, str) and func.attr in _STR_METHODS:
+                _check_method_size(target, func.attr, args)
                 return getattr(target, func.attr)(*args)
             if target is math and not func.attr.startswith("_"):
                 return getattr(math, func.attr)(*args)
         raise EvalError(f"call '{ast.unparse(node)}' is not allowed in $(eval)")
+
+
+def _check_method_size(target: str, method: str, args: list[Any]) -> None:
+    # Bound the result before computing it: replace and join can multiply their inputs' sizes.
+    size = 0
+    if method == "replace" and len(args) >= 2 and isinstance(args[1], str):
+        size = len(target) * max(1, len(args[1]))
+    elif method == "join" and args and isinstance(args[0], list | tuple):
+        size = sum(len(str(x)) for x in args[0]) + len(target) * len(args[0])
+    if size > _MAX_LEN:
+        raise EvalError("result too large")
 
 
 def _bounded(value: Any) -> Any:

@@ -38,6 +38,9 @@ def test_computes_like_python(text, expected):
     ("lambda: 1", "is not allowed in $(eval)"),
     ("'a' * 10 ** 9", "result too large"),
     ("2 ** 100000", "exponent 100000 too large"),
+    ("'%999999999s' % 'a'", "string formatting"),
+    ("('a' * 1000000).replace('a', 'a' * 1000000)", "result too large"),
+    ("''.join(['a' * 1000000] * 1000000)", "result too large"),
     ("x = 1", "invalid expression"),
     ("undefined_name + 1", "name 'undefined_name' is not defined"),
     ("1 / 0", "ZeroDivisionError"),
@@ -46,3 +49,10 @@ def test_refuses(text, reason):
     with pytest.raises(EvalError) as info:
         safe_eval(text, {"name": "robot"}, {})
     assert reason in str(info.value)
+
+
+@pytest.mark.parametrize("text", ["(" * 100000 + "1" + ")" * 100000, "-" * 100000 + "1", "not " * 100000 + "1",
+                                  "-" * 150 + "1"], ids=["parentheses", "minus", "not", "minus150"])
+def test_deep_nesting_is_an_error_not_a_crash(text):
+    with pytest.raises(EvalError, match=r"invalid expression|too deep"):
+        safe_eval(text, {}, {})
