@@ -13,11 +13,11 @@ import shutil
 import signal
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import pytest
 from livebus import Proc
+from procscan import assert_none_left
 from rosbags.highlevel import AnyReader
 
 DEMO = [sys.executable, "-m", "robotmodel.cli.main", "demo", "--no-browser"]
@@ -37,30 +37,6 @@ def _port(stdout: str) -> str:
     assert m, stdout
     assert m.group(1) != "7447" and m.group(2) != "0"
     return m.group(1)
-
-
-def _leftovers(port: str) -> list[str]:
-    """Processes still running with the demo's bus in their environment."""
-    found = []
-    needle = f"ROBOTMODEL_ZENOH_PORT={port}".encode()
-    for entry in Path("/proc").iterdir():
-        if not entry.name.isdigit():
-            continue
-        try:
-            environ = (entry / "environ").read_bytes()
-            cmdline = (entry / "cmdline").read_bytes().replace(b"\0", b" ").decode(errors="replace")
-        except OSError:
-            continue
-        if needle in environ.split(b"\0"):
-            found.append(f"{entry.name}: {cmdline}")
-    return found
-
-
-def _no_leftovers(port: str) -> None:
-    deadline = time.monotonic() + 10
-    while _leftovers(port) and time.monotonic() < deadline:
-        time.sleep(0.2)
-    assert _leftovers(port) == []
 
 
 def _read(mcap: Path) -> tuple[dict[str, int], list[tuple[int, str, str, tuple[float, ...], bool]]]:
@@ -104,7 +80,7 @@ def test_demo_runs_headless_and_leaves_its_files(tmp_path: Path) -> None:
     assert done.returncode == 0, done.stdout + done.stderr
     assert "Traceback" not in done.stderr, done.stderr
     port = _port(done.stdout)
-    _no_leftovers(port)
+    assert_none_left(port)
     listing = done.stdout[done.stdout.index(f"files in {out.resolve()}/:"):]
     # The recording: every topic of the pipeline, readable by rosbags.
     mcap = out / "demo.mcap"
@@ -151,7 +127,7 @@ def test_ctrl_c_stops_everything_and_keeps_the_recording(tmp_path: Path) -> None
     finally:
         proc.kill()
     assert code == 0, "\n".join(proc.out + proc.err)
-    _no_leftovers(header.group(1))
+    assert_none_left(header.group(1))
     counts, _ = _read(out / "demo.mcap")
     assert counts.get("/odom", 0) > 0 and counts.get("/tf_static", 0) > 0
     assert any(line.startswith("files in ") for line in proc.out)
