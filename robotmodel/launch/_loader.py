@@ -84,7 +84,10 @@ def detect_dialect(path: Path, root: Element) -> Dialect:
 def load_launch_file(path: Path, args: Mapping[str, str], package_paths: Sequence[Path] = ()) -> LaunchFile:
     """Read ``path`` with command-line ``args``; raises LaunchError (``FILE:LINE: ...``) on bad input."""
     loader = _Loader(package_paths)
-    loader.load_top(path.resolve(), dict(args))
+    try:
+        loader.load_top(path.resolve(), dict(args))
+    except RecursionError:
+        raise LaunchError(f"{path}: elements nested too deep") from None
     return LaunchFile(loader.nodes, loader.params, loader.skipped, loader.notes)
 
 

@@ -49,8 +49,10 @@ class SubstContext:
 
 def parse(text: str, ctx: SubstContext) -> Parts:
     """Split ``text`` into literal text and substitutions; malformed syntax raises LaunchError."""
-    parts, pos = _parse_text(text, 0, ctx, top=True)
-    del pos
+    try:
+        parts, _ = _parse_text(text, 0, ctx, top=True)
+    except RecursionError:
+        raise ctx.error("substitutions nested too deep") from None
     return parts
 
 

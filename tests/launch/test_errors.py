@@ -163,3 +163,12 @@ def test_python_launch_file_is_refused_in_one_line(pkg, capsys):
     assert code == 1
     assert err == [f"robotmodel launch: error: {path}: only XML launch files are read (.launch, .launch.xml, "
                    ".xml), not Python or YAML"]
+
+
+def test_deeply_nested_substitutions_and_groups_are_errors(pkg, capsys):
+    path = pkg.launch("deep.launch", '<launch>\n<arg name="x" value="' + "$(arg " * 1200 + "y" + ")" * 1200 + '"/>\n</launch>\n')
+    code, err, _ = run_cli(capsys, str(path))
+    assert (code, err) == (1, [f"robotmodel launch: error: {path}:2: substitutions nested too deep"])
+    path = pkg.launch("groups.launch", "<launch>" + "<group>" * 1200 + "</group>" * 1200 + "</launch>")
+    code, err, _ = run_cli(capsys, str(path))
+    assert (code, err) == (1, [f"robotmodel launch: error: {path}: elements nested too deep"])
