@@ -73,9 +73,15 @@ def cylinder_geometry(radius: float, length: float) -> dict[str, Any]:
 
 
 def mesh_geometry(vertices: npt.NDArray[np.float32], faces: npt.NDArray[np.uint32],
-                  colors: npt.NDArray[np.float32] | None = None) -> dict[str, Any]:
-    """An indexed BufferGeometry; ``colors`` are per-vertex RGB in 0..1."""
+                  colors: npt.NDArray[np.float32] | None = None,
+                  normals: npt.NDArray[np.float32] | None = None) -> dict[str, Any]:
+    """An indexed BufferGeometry; ``colors`` are per-vertex RGB in 0..1, ``normals`` unit vectors.
+
+    Without normals meshcat's viewer computes them in the browser.
+    """
     attributes = {"position": _typed(np.ascontiguousarray(vertices, dtype=np.float32), 3)}
+    if normals is not None:
+        attributes["normal"] = _typed(np.ascontiguousarray(normals, dtype=np.float32), 3)
     if colors is not None:
         attributes["color"] = _typed(np.ascontiguousarray(colors, dtype=np.float32), 3)
     return {"uuid": _uid(), "type": "BufferGeometry",

@@ -145,13 +145,14 @@ def _primitive(geometry: Geometry) -> dict[str, Any]:
 
 def _mesh_object(data: MeshData, rgba: tuple[float, float, float, float]) -> dict[str, Any]:
     if not data.own.any():
-        return wire.mesh_object(wire.mesh_geometry(data.vertices, data.faces), wire.phong_material(rgba))
+        return wire.mesh_object(wire.mesh_geometry(data.vertices, data.faces, normals=data.normals),
+                                wire.phong_material(rgba))
     colors = data.colors
     if not data.own.all():
         colors = colors.copy()
         colors[~data.own] = rgba[:3]
     material = wire.phong_material((1.0, 1.0, 1.0, rgba[3]), vertex_colors=True)
-    return wire.mesh_object(wire.mesh_geometry(data.vertices, data.faces, colors), material)
+    return wire.mesh_object(wire.mesh_geometry(data.vertices, data.faces, colors, data.normals), material)
 
 
 def _triad(size: float) -> dict[str, Any]:

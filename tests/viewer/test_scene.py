@@ -315,3 +315,21 @@ def test_open_hands_the_url_to_the_users_browser(tmp_path: Path) -> None:
     finally:
         proc.send_signal(signal.SIGINT)
         assert proc.wait(timeout=30) == 0
+
+
+def test_normals_are_sent_unit_and_outward_and_follow_the_scale(tmp_path: Path) -> None:
+    stl = ERD_ROBOTS / "panda_description" / "meshes" / "collision" / "link1.stl"
+    data, _ = load_mesh(stl, tmp_path / "cache")
+    np.testing.assert_allclose(np.linalg.norm(data.normals, axis=1), 1.0, atol=1e-5)
+    outward = np.einsum("ij,ij->i", data.normals, data.vertices - data.vertices.mean(axis=0))
+    assert (outward > 0).mean() > 0.8  # a closed, convex-ish link: normals point away from its middle
+    scaled = data.scaled((2.0, 1.0, 0.5))
+    # A plane n·x = 0 scaled by S has the normal S⁻¹n (normalized).
+    expected = data.normals / np.array([2.0, 1.0, 0.5])
+    expected /= np.linalg.norm(expected, axis=1, keepdims=True)
+    np.testing.assert_allclose(scaled.normals, expected, atol=1e-5)
+    urdf = f"""<robot name="r"><link name="a"><visual><geometry><mesh filename="file://{stl}"/>
+      </geometry></visual></link></robot>"""
+    _, objects = _decode(Viewer(parse_urdf(urdf), serve=False, cache_dir=tmp_path / "cache"))
+    attributes = next(o for p, o in objects.items() if "<visual>" in p)["geometries"][0]["data"]["attributes"]
+    assert set(attributes) == {"position", "normal"}
