@@ -13,7 +13,7 @@ from collections.abc import Callable
 from functools import cache
 from typing import Any
 
-from robotmodel.errors import BusError
+from robotmodel.errors import BusError, MessageError
 
 __all__ = [
     "KNOWN_TYPE_HASHES",
@@ -53,7 +53,7 @@ class Codec:
         raise NotImplementedError
 
     def decode(self, data: bytes | memoryview) -> Any:
-        """The message; raises any exception on bytes that are not a valid message."""
+        """The message; raises :class:`MessageError` on bytes that are not a valid message."""
         raise NotImplementedError
 
     def warm(self) -> None:
@@ -101,7 +101,13 @@ class RosbagsCodec(Codec):
 
     def decode(self, data: bytes | memoryview) -> Any:
         """See :meth:`Codec.decode`."""
-        obj = self._store.deserialize_cdr(data, self.typename)
+        from rosbags.serde import SerdeError
+
+        try:
+            obj = self._store.deserialize_cdr(data, self.typename)
+        except (SerdeError, UnicodeDecodeError) as exc:
+            # rosbags reports every malformed buffer as SerdeError; text fields may also fail UTF-8.
+            raise MessageError(f"cannot decode {len(data)} bytes as {self.typename}: {exc}") from None
         return self._from_ros(obj) if self._from_ros else obj
 
     def warm(self) -> None:

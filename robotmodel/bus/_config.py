@@ -67,9 +67,11 @@ def _check_endpoints(endpoints: Sequence[str]) -> list[str]:
 
 
 def _insert(config: zenoh.Config, key: str, value: str) -> None:
+    import zenoh
+
     try:
         config.insert_json5(key, value)
-    except Exception as exc:  # zenoh raises its own ZError on a bad key or value
+    except zenoh.ZError as exc:
         raise BusError(f"zenoh config: cannot set {key}={value}: {exc}") from exc
 
 
@@ -108,7 +110,7 @@ def _from_file(env: str) -> zenoh.Config | None:
         return None
     try:
         config = zenoh.Config.from_file(path)
-    except Exception as exc:
+    except zenoh.ZError as exc:
         raise BusError(f"{env}: cannot load zenoh config '{path}': {exc}") from exc
     return config
 

@@ -24,7 +24,7 @@ from robotmodel.bus._names import (
     validate_node_name,
 )
 from robotmodel.bus._qos import QOS_DEFAULT, QoS
-from robotmodel.errors import BusError
+from robotmodel.errors import BusError, MessageError
 
 __all__ = ["Context", "Node", "Publisher", "RawMessage", "Subscription", "default_domain_id"]
 
@@ -255,7 +255,7 @@ class Subscription(Generic[M]):
         else:
             try:
                 item = decode(sample.payload)
-            except Exception as exc:  # any decoder failure is a bad payload, never a crash
+            except MessageError as exc:  # a bad payload is dropped, never a crash
                 self._warner.warn("decode", f"dropped a message on '{self.topic_name}' that does not decode as "
                                             f"{self.codec.typename if self.codec else '?'}: "
                                             f"{type(exc).__name__}: {exc}")

@@ -105,7 +105,10 @@ class _Publisher(RawPublisher):
         self._put = pub.put
 
     def put(self, payload: bytes, attachment: bytes) -> None:
-        self._put(payload, attachment=attachment)
+        try:
+            self._put(payload, attachment=attachment)
+        except zenoh.ZError as exc:  # e.g. the session was closed under a timer thread
+            raise BusError(f"cannot publish: {exc}") from exc
 
     def matched(self) -> bool:
         pub = self._pub

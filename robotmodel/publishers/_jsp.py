@@ -158,7 +158,7 @@ class JointStatePublisher:
         while not self._stop.wait(max(0.0, deadline - time.monotonic())):
             try:
                 self.publish()
-            except Exception:
+            except RobotModelError:
                 # The timer must outlive one bad tick (a closed session at shutdown, say).
                 self.log.exception("publishing joint states failed")
             deadline += period

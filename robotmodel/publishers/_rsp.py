@@ -7,6 +7,7 @@ import threading
 from types import TracebackType
 from typing import Any
 
+from robotmodel.errors import MessageError
 from robotmodel.msgs import JointState, String, TFMessage, TransformStamped
 from robotmodel.publishers._jointstate_cdr import CannotDecode, JointStateDecoder
 from robotmodel.publishers._once import Every
@@ -93,7 +94,7 @@ class RobotStatePublisher:
         except CannotDecode:
             try:
                 msg = self._codec.decode(raw.payload)
-            except Exception as exc:  # any decoder failure means a bad payload: drop it, never crash
+            except MessageError as exc:  # a bad payload is dropped, never a crash
                 self._bad_payload.warn("dropped a message on '%s' that does not decode as sensor_msgs/msg/"
                                        "JointState: %s: %s", raw.topic, type(exc).__name__, exc)
                 return

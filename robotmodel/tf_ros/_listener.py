@@ -8,7 +8,7 @@ import time
 from types import TracebackType
 from typing import TYPE_CHECKING, Any
 
-from robotmodel.errors import TransformException
+from robotmodel.errors import MessageError, TransformException
 from robotmodel.msgs import TFMessage, decode_tf_records
 from robotmodel.tf_ros._authority import PublisherNames
 from robotmodel.tf_ros._node import OwnedNode
@@ -108,7 +108,7 @@ class TransformListener:
                 records = decode_tf_records(raw.payload)
             else:
                 msg: TFMessage = self._codec.decode(raw.payload)
-        except Exception as exc:  # any decoder failure means a bad payload: drop it, never crash
+        except MessageError as exc:  # a bad payload is dropped, never a crash
             self._warn(f"dropped a message on '{raw.topic}' that does not decode as tf2_msgs/msg/TFMessage: "
                        f"{type(exc).__name__}: {exc}")
             return
