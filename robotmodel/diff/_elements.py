@@ -150,7 +150,8 @@ def compare_joint(old: Joint, new: Joint, tolerance: float, links: Mapping[str, 
     if links.get(old.child) != new.child:
         fields.add(FieldChange("child", old.child, new.child))
     fields.pose("origin", old.origin, new.origin)
-    if old.type in _AXIS_TYPES or new.type in _AXIS_TYPES:
+    # A fixed or floating joint has no axis (urdfdom leaves its default): no change to report there.
+    if old.type in _AXIS_TYPES and new.type in _AXIS_TYPES:
         fields.vector("axis", old.axis, new.axis)
     unit = "m" if new.type is JointType.PRISMATIC else "rad"
     la, lb = old.limit, new.limit

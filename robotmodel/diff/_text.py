@@ -1,5 +1,8 @@
 """The diff as text for a code review: grouped by section, ``-`` removed, ``+`` added, ``~`` changed.
 
+In a section: removed elements, added ones, renamed ones (with their changes), then changed
+ones, each in document order; added and removed shapes of a link are ``+``/``-`` lines too.
+
 Example::
 
     --- old/arm.urdf.xacro (robot 'arm', root 'world')
@@ -98,7 +101,8 @@ def _section(kind: str, title: str, section: SectionDiff) -> list[str]:
         lines.append(f"  + {kind} {_summary(summary)}")
     changed = {c.new_name: c for c in section.changed}
     renamed = {new: old for old, new in section.renamed}
-    # Renamed and changed elements in the new description's order.
+    # Renamed elements first (with their changes, if any), then the other changed ones; each group in
+    # the new description's order.
     order = [new for _, new in section.renamed] + [c.new_name for c in section.changed]
     for new in sorted(set(order), key=order.index):
         old = renamed.get(new, changed[new].old_name if new in changed else new)

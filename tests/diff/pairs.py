@@ -64,7 +64,7 @@ def links_below(text: str, joint: str) -> set[str]:
 
 def zero_poses(text: str) -> dict[str, np.ndarray]:
     """yourdfpy's T_root_link (4x4) of every link with every actuated joint at 0."""
-    robot = yourdfpy.URDF.load(io.StringIO(text), load_meshes=False, build_collision_scene_graph=False,
+    robot = yourdfpy.URDF.load(io.BytesIO(text.encode()), load_meshes=False, build_collision_scene_graph=False,
                                load_collision_meshes=False)
     robot.update_cfg(np.zeros(robot.num_actuated_joints))
     return {name: robot.get_transform(name, robot.base_link) for name in robot.link_map}
