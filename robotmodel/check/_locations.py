@@ -7,7 +7,9 @@ it includes. In order of preference:
 1. the element written out, ``<link name="base_link">``;
 2. a macro call given that exact name, ``<xacro:segment name="base_link" .../>``;
 3. a name template that yields it, ``<link name="${prefix}base_link">``, when exactly one
-   template matches with the most literal text (``${prefix}`` alone identifies nothing).
+   template matches with the most literal text (``${prefix}`` alone identifies nothing);
+4. a macro call named by the end of the name after a separator, ``<xacro:link name="link7">``
+   for ``fr3_link7`` (the longest such, when it is the only one).
 
 Otherwise the finding is placed on the entry file without a line. Comments are ignored.
 """
@@ -125,7 +127,24 @@ class SourceIndex:
                 found = self._first(pattern, with_includes=with_includes)
                 if found is not None:
                     return found
-        return self._template(tag, name) or Location(display_path(self.entry), None)
+        return self._template(tag, name) or self._prefixed_call(name) or Location(display_path(self.entry), None)
+
+    def _prefixed_call(self, name: str) -> Location | None:
+        """A macro call named by the end of ``name`` after a separator: ``name="link7"`` for ``fr3_link7``."""
+        best: list[Location] = []
+        best_len = 0
+        for file, text in self._sources(with_includes=True):
+            for match in _CALL_NAME.finditer(text):
+                value = match.group(1)[1:-1]
+                if (not value or _PLACEHOLDER.search(value) or len(value) >= len(name)
+                        or not name.endswith(value) or name[-len(value) - 1].isalnum()):
+                    continue
+                here = Location(file, _line(text, match.start()))
+                if len(value) > best_len:
+                    best, best_len = [here], len(value)
+                elif len(value) == best_len:
+                    best.append(here)
+        return best[0] if len(set(best)) == 1 else None
 
     def locate_value(self, attribute: str, value: str) -> Location | None:
         """The first place ``attribute="value"`` is written, e.g. a mesh's ``filename``; None if nowhere."""
