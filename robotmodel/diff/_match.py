@@ -2,12 +2,12 @@
 
 A rename is found from the tree, never from names alone:
 
-- the two roots are the same link;
 - the two ends of a joint present on both sides are the same links (a joint that kept its
   name but whose child now has a new name: the child was renamed);
 - a joint of each side with the same parent, child and type (after mapping renamed links)
   is the same joint under a new name;
-- when a joint and its child link were both renamed, the unmatched joints under the same
+- when those found nothing more: the two roots, if neither is matched yet, are the same link;
+- and when a joint and its child link were both renamed, the unmatched joints under the same
   (mapped) parent with the same type pair up when there is one on each side, or, among
   several, when exactly one pair has the same origin.
 
@@ -56,7 +56,6 @@ def _same_origin(a: Pose, b: Pose, tolerance: float) -> bool:
 
 
 def _sure_rules(old: RobotDescription, new: RobotDescription, links: _Pairs, joints: _Pairs) -> None:
-    links.pair(old.root, new.root)
     for old_name, new_name in list(joints.forward.items()):
         a, b = old.joint(old_name), new.joint(new_name)
         links.pair(a.parent, b.parent)
@@ -76,6 +75,9 @@ def _sure_rules(old: RobotDescription, new: RobotDescription, links: _Pairs, joi
 
 def _grouped_rule(old: RobotDescription, new: RobotDescription, links: _Pairs, joints: _Pairs,
                   tolerance: float) -> None:
+    # Only once the tree said all it could: a root replaced by a new link above a renamed one
+    # must not pair with it when the old root's children already told where it went.
+    links.pair(old.root, new.root)
     for old_parent, new_parent in list(links.forward.items()):
         olds = [j for j in old.child_joints(old_parent)
                 if j.name not in joints.forward and j.child not in links.forward]

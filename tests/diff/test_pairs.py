@@ -264,3 +264,43 @@ def test_same_rotation_written_differently_is_equal(tmp_path: Path) -> None:
     b = edited(old, lambda r: _origin(element(r, "joint", "gripper_palm_joint"), rpy=[-math.pi, 0.0, 0.0]))
     done = run(str(write(tmp_path, "a.urdf", a)), str(write(tmp_path, "b.urdf", b)), cwd=tmp_path)
     assert (done.returncode, done.stdout) == (0, ""), done.stdout
+
+
+def test_renamed_root_with_renamed_child_joints(tmp_path: Path) -> None:
+    old = expanded("arm.urdf.xacro")
+
+    def rename(root):
+        element(root, "link", "world").set("name", "world2")
+        joint = element(root, "joint", "arm_mount_joint")
+        joint.set("name", "mount")
+        joint.find("parent").set("link", "world2")
+
+    new = edited(old, rename)
+    code, report = run_json(str(write(tmp_path, "a.urdf", old)), str(write(tmp_path, "b.urdf", new)), cwd=tmp_path)
+    assert code == 1
+    only(report, "links", "joints")
+    assert report["links"]["renamed"] == [{"old": "world", "new": "world2"}]
+    assert report["joints"]["renamed"] == [{"old": "arm_mount_joint", "new": "mount"}]
+    assert report["links"]["changed"] == report["joints"]["changed"] == []
+
+
+def test_removed_root_is_not_taken_for_the_renamed_link_below_it(tmp_path: Path) -> None:
+    """world and its joint removed, arm_base_link renamed base (the new root): the tree below tells the rename."""
+    old = expanded("arm.urdf.xacro")
+
+    def change(root):
+        root.remove(element(root, "link", "world"))
+        root.remove(element(root, "joint", "arm_mount_joint"))
+        element(root, "link", "arm_base_link").set("name", "base")
+        element(root, "joint", "arm_base_joint").find("parent").set("link", "base")
+
+    new = edited(old, change)
+    code, report = run_json(str(write(tmp_path, "a.urdf", old)), str(write(tmp_path, "b.urdf", new)), cwd=tmp_path)
+    assert code == 1
+    only(report, "links", "joints")
+    assert report["new"]["root"] == "base"
+    assert report["links"]["removed"] == [{"name": "world"}]
+    assert report["links"]["renamed"] == [{"old": "arm_base_link", "new": "base"}]
+    assert report["joints"]["removed"] == [{"name": "arm_mount_joint", "type": "fixed", "parent": "world",
+                                            "child": "arm_base_link"}]
+    assert report["links"]["added"] == report["joints"]["added"] == []
