@@ -133,6 +133,8 @@ class Demo:
         self._ready(sim, r"integrating", "sensor_simulator")
         c.example("robot_controller", *scale)
         c.robotmodel("tf2_echo", "map", "base_footprint", "1", on_line=self.echo)
+        # The viewer follows /joint_states (the wheels turn). Not --tf: with /tf streaming, headless
+        # Chromium's screenshot of the page does not complete in time on a small machine.
         view = c.robotmodel("view", robot, "--follow", "--frames", "none")
         found = self._ready(view, r"^(http://127\.0\.0\.1:\d+/\S*)", "view")
         self.url = found.group(1)

@@ -21,8 +21,8 @@ def main(argv: list[str]) -> int:
     began = time.monotonic()
     try:
         png = screenshot(url, width=1280, height=800, timeout=90.0)
-    except RobotModelError as exc:
-        print(f"no screenshot: {' '.join(str(exc).splitlines())}", flush=True)
+    except (RobotModelError, OSError, TimeoutError) as exc:  # the browser's own errors included: one line
+        print(f"no screenshot: {type(exc).__name__}: {' '.join(str(exc).splitlines())}", flush=True)
         return 1
     tmp = out.with_name(f".{out.name}.part")
     tmp.write_bytes(png)
