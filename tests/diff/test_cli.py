@@ -127,3 +127,22 @@ def test_help_names_the_exit_codes(tmp_path: Path) -> None:
     done = run("--help", cwd=tmp_path)
     assert done.returncode == 0
     assert "Exit 0 when equal, 1 when different, 2 on error" in " ".join(done.stdout.split())
+
+
+def test_readme_example_is_what_the_command_prints(tmp_path: Path) -> None:
+    """The README's example: the elbow raised 25 mm and its upper limit lowered to 2 rad in the bundled arm."""
+    readme = (BUNDLED.parent / "README.md").read_text(encoding="utf-8")
+    block = readme.split("$ robotmodel diff old/arm.urdf.xacro new/arm.urdf.xacro\n", 1)[1].split("  ...\n", 1)[0]
+    for side in ("old", "new"):
+        (tmp_path / side).mkdir()
+        shutil.copy(BUNDLED / "inertia_macros.xacro", tmp_path / side)
+    text = (BUNDLED / "arm.urdf.xacro").read_text()
+    (tmp_path / "old" / "arm.urdf.xacro").write_text(text)
+    for old, new in (('z="${upper_length}"', 'z="${upper_length + 0.025}"'),
+                     ('lower="${-2.5}" upper="${2.5}"', 'lower="${-2.5}" upper="${2.0}"')):
+        assert text.count(old) == 1
+        text = text.replace(old, new)
+    (tmp_path / "new" / "arm.urdf.xacro").write_text(text)
+    done = run("old/arm.urdf.xacro", "new/arm.urdf.xacro", cwd=tmp_path)
+    assert done.returncode == 1
+    assert done.stdout.startswith(block)
