@@ -53,6 +53,8 @@ class Browser:
         if binary is None:
             raise ViewerError("no Chromium found (install chromium, or set ROBOTMODEL_CHROMIUM)")
         self.timeout = timeout
+        if not os.access(binary, os.X_OK) or Path(binary).is_dir():
+            raise ViewerError(f"cannot run Chromium at '{binary}' (install chromium, or set ROBOTMODEL_CHROMIUM)")
         self._profile = tempfile.mkdtemp(prefix="robotmodel-chromium-")
         self._loop = asyncio.new_event_loop()
         self._next_id = 0
@@ -60,11 +62,17 @@ class Browser:
         self._session: str | None = None
         #: DevTools events received so far (method and params), e.g. ``Network.requestWillBeSent``.
         self.events: list[dict[str, Any]] = []
-        self._proc = subprocess.Popen(
-            [binary, *FLAGS, f"--user-data-dir={self._profile}", "--remote-debugging-address=127.0.0.1",
-             "--remote-debugging-port=0", f"--window-size={width},{height}", "about:blank"],
-            stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True,
-        )
+        try:
+            self._proc = subprocess.Popen(
+                [binary, *FLAGS, f"--user-data-dir={self._profile}", "--remote-debugging-address=127.0.0.1",
+                 "--remote-debugging-port=0", f"--window-size={width},{height}", "about:blank"],
+                stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                start_new_session=True,
+            )
+        except OSError as exc:
+            shutil.rmtree(self._profile, ignore_errors=True)
+            self._loop.close()
+            raise ViewerError(f"cannot run Chromium at '{binary}': {exc.strerror or exc}") from None
         try:
             self._loop.run_until_complete(self._attach(width, height))
         except BaseException:

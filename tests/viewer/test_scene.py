@@ -333,3 +333,16 @@ def test_normals_are_sent_unit_and_outward_and_follow_the_scale(tmp_path: Path) 
     _, objects = _decode(Viewer(parse_urdf(urdf), serve=False, cache_dir=tmp_path / "cache"))
     attributes = next(o for p, o in objects.items() if "<visual>" in p)["geometries"][0]["data"]["attributes"]
     assert set(attributes) == {"position", "normal"}
+
+
+def test_screenshot_without_a_browser_is_one_line_and_no_file(tmp_path: Path) -> None:
+    out = tmp_path / "shot.png"
+    env = dict(os.environ, ROBOTMODEL_CHROMIUM=str(tmp_path / "no-such-chromium"))
+    result = subprocess.run([sys.executable, "-m", "robotmodel.cli.main", "view", str(BUNDLED / "diffbot.urdf.xacro"),
+                             "--screenshot", str(out)], env=env, capture_output=True, text=True, timeout=120,
+                            check=False)
+    assert result.returncode == 1, result.stderr
+    errors = [line for line in result.stderr.splitlines() if "error" in line]
+    assert len(errors) == 1 and "no-such-chromium" in errors[0], result.stderr
+    assert "Traceback" not in result.stderr
+    assert list(tmp_path.iterdir()) == []
