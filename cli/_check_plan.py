@@ -56,12 +56,13 @@ def plan_checks(
     base: CheckJob,
     cli_args: Mapping[str, str],
     config: ProjectConfig | None,
-    includes: Callable[[Sequence[CheckJob]], list[list[str]]],
+    includes: Callable[[Sequence[CheckJob]], list[list[str] | None]],
 ) -> tuple[list[CheckJob], list[str]]:
     """The checks to run, and the macro-only files no entry includes.
 
     ``base`` holds the options every check shares; ``includes`` maps entry checks to the
-    files each includes (run in parallel by the caller, and only when a fragment needs it).
+    files each includes, None for one that does not expand (run in parallel by the caller,
+    and only when a fragment needs it).
     """
     from robotmodel.check import is_macro_only, job_args
 
@@ -76,16 +77,19 @@ def plan_checks(
         return list(dict.fromkeys(entry_jobs)), []
     jobs: list[CheckJob] = []
     orphans: list[str] = []
-    included: list[set[str]] | None = None
+    included: list[set[str] | None] | None = None
     for file in files:
         own = config.entries_for(file) if config is not None else []
         if own:
             jobs.extend(with_args(file, e.args) for e in own)
         elif entries and is_macro_only(file):
             if included is None:
-                included = [{os.path.realpath(p) for p in deps} for deps in includes(entry_jobs)]
+                included = [None if deps is None else {os.path.realpath(p) for p in deps}
+                            for deps in includes(entry_jobs)]
             real = os.path.realpath(file)
-            users = [replace(job, via=file) for job, deps in zip(entry_jobs, included, strict=True) if real in deps]
+            # An entry that does not expand may be broken by this very file: it is checked too.
+            users = [replace(job, via=file) for job, deps in zip(entry_jobs, included, strict=True)
+                     if deps is None or real in deps]
             if users:
                 jobs.extend(users)
             else:

@@ -112,14 +112,15 @@ def _workers(args: argparse.Namespace, n: int) -> int:
     return max(1, min(n, args.jobs if args.jobs > 0 else (os.cpu_count() or 1)))
 
 
-def _includes_of(job: CheckJob) -> list[str]:
+def _includes_of(job: CheckJob) -> list[str] | None:
+    """The files ``job``'s document includes; None when it does not expand (so what it includes is unknown)."""
     from robotmodel.errors import RobotModelError
     from robotmodel.xacro import dependencies
 
     try:
         return dependencies(job.file, dict(job.args), package_paths=job.package_paths, untrusted=job.untrusted)
     except RobotModelError:
-        return []
+        return None
 
 
 def _map(func: Any, jobs: Sequence[CheckJob], workers: int) -> Iterator[Any]:
@@ -167,7 +168,8 @@ def run(args: argparse.Namespace) -> int:
     jobs, orphans = plan_checks(files, base, args.mappings, config,
                                 lambda entry_jobs: list(_map(_includes_of, entry_jobs, workers)))
     unchecked = [_orphan(f, args.strict) for f in orphans]
-    many = len(jobs) + len(unchecked) != 1 or len(args.files) != 1
+    # One FILE checked once prints exactly what check-urdf always printed for it (no summary).
+    many = not (len(jobs) == 1 and not unchecked and len(args.files) == 1)
     return _emit(args, _map(check_file, jobs, _workers(args, len(jobs))), unchecked, many=many)
 
 

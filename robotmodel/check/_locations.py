@@ -38,6 +38,7 @@ _IN_MESSAGE = (
 )
 _XACRO_FILES = re.compile(r"\bin file ([^;)]+?)(?: <- [^;)]*)?\)")
 _XML_LINE = re.compile(r"\bline (\d+), column \d+")
+_UNKNOWN_MACRO = re.compile(r"\bunknown macro name: (xacro:[\w.-]+)")
 
 
 class Location(NamedTuple):
@@ -146,6 +147,11 @@ class SourceIndex:
                     best.append(here)
         return best[0] if len(set(best)) == 1 else None
 
+    def first_use(self, tag: str) -> Location:
+        """The first ``<tag`` written in the entry file (e.g. a call of an unknown macro), else the file."""
+        return self._first(re.compile(rf"<{re.escape(tag)}\b"), with_includes=False) or Location(
+            display_path(self.entry), None)
+
     def locate_value(self, attribute: str, value: str) -> Location | None:
         """The first place ``attribute="value"`` is written, e.g. a mesh's ``filename``; None if nowhere."""
         pattern = re.compile(rf"\s{re.escape(attribute)}\s*=\s*{_quoted(value)}")
@@ -184,8 +190,9 @@ def error_location(message: str, index: SourceIndex) -> Location:
     """Where the error ``message`` (from loading ``index.entry``) points.
 
     URDF errors start with ``FILE:LINE:`` when the parser placed them; xacro errors end with
-    ``(in file A <- B)`` (A the innermost) and XML errors carry ``line N, column M``; failing
-    those, an element the message names is looked up as for findings.
+    ``(in file A <- B)`` (A the innermost; an unknown macro is placed at its first call there)
+    and XML errors carry ``line N, column M``; failing those, an element the message names is
+    looked up as for findings.
     """
     entry = index.entry
     for prefix in (f"{entry}:", f"{display_path(entry)}:"):
@@ -198,6 +205,8 @@ def error_location(message: str, index: SourceIndex) -> Location:
     if files is not None:
         inner = files.group(1).strip()
         if inner != "string":
+            if line is None and (macro := _UNKNOWN_MACRO.search(message)) is not None:
+                return SourceIndex(inner).first_use(macro.group(1))
             return Location(display_path(inner), int(line.group(1)) if line else None)
     for pattern, tag in _IN_MESSAGE:
         match = pattern.search(message)
