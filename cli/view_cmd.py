@@ -180,10 +180,18 @@ def _write_files(args: argparse.Namespace, desc: Any, initial: dict[str, float],
     viewer = make_viewer(args, desc, initial, frames, serve=False)
     html = viewer.static_html()
     png = screenshot_html(html, width=size[0], height=size[1]) if args.screenshot else None
-    if args.static_html:
-        write_atomic(args.static_html, html)
-        print(f"wrote {args.static_html}", file=sys.stderr)
-    if png is not None:
-        _write_bytes_atomic(args.screenshot, png)
-        print(f"wrote {args.screenshot}", file=sys.stderr)
+    written = []
+    try:
+        if args.static_html:
+            write_atomic(args.static_html, html)
+            written.append(args.static_html)
+        if png is not None:
+            _write_bytes_atomic(args.screenshot, png)
+            written.append(args.screenshot)
+    except OSError as exc:
+        for path in written:  # all or nothing
+            Path(path).unlink(missing_ok=True)
+        raise RobotModelError(f"cannot write {exc.filename or 'the output'}: {exc.strerror or exc}") from None
+    for path in written:
+        print(f"wrote {path}", file=sys.stderr)
     return 0

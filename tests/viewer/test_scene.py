@@ -346,3 +346,11 @@ def test_screenshot_without_a_browser_is_one_line_and_no_file(tmp_path: Path) ->
     assert len(errors) == 1 and "no-such-chromium" in errors[0], result.stderr
     assert "Traceback" not in result.stderr
     assert list(tmp_path.iterdir()) == []
+
+
+def test_an_unwritable_output_is_one_line(tmp_path: Path) -> None:
+    blocker = tmp_path / "file"
+    blocker.write_text("")
+    result = _cli("view", str(BUNDLED / "diffbot.urdf.xacro"), "--static-html", str(blocker / "sub" / "out.html"))
+    assert result.returncode == 1
+    assert result.stderr.startswith("robotmodel view: error: cannot write ") and result.stderr.count("\n") == 1
