@@ -18,9 +18,10 @@ either end.
 from __future__ import annotations
 
 import math
+from collections import deque
 from dataclasses import dataclass
 
-from robotmodel.model import Pose, RobotDescription
+from robotmodel.model import Joint, Pose, RobotDescription
 
 __all__ = ["Matching", "match"]
 
@@ -34,20 +35,20 @@ class Matching:
 
 
 class _Pairs:
-    """A growing one-to-one old → new name map."""
+    """A growing one-to-one old → new name map; each new pair is queued for the rules to follow up."""
 
     def __init__(self, old: list[str], new: list[str]) -> None:
         present = set(new)
         self.forward = {name: name for name in old if name in present}
         self.taken = set(self.forward.values())
-        self.grew = False
+        self.queue: deque[tuple[str, str]] = deque(self.forward.items())
 
     def pair(self, old: str, new: str) -> None:
         if old in self.forward or new in self.taken:
             return
         self.forward[old] = new
         self.taken.add(new)
-        self.grew = True
+        self.queue.append((old, new))
 
 
 def _same_origin(a: Pose, b: Pose, tolerance: float) -> bool:
@@ -55,33 +56,69 @@ def _same_origin(a: Pose, b: Pose, tolerance: float) -> bool:
                                                                                    strict=True))
 
 
-def _sure_rules(old: RobotDescription, new: RobotDescription, links: _Pairs, joints: _Pairs) -> None:
-    for old_name, new_name in list(joints.forward.items()):
-        a, b = old.joint(old_name), new.joint(new_name)
-        links.pair(a.parent, b.parent)
-        links.pair(a.child, b.child)
-    # A link has one parent joint: when both ends map, the edge is the same joint renamed.
-    for joint in old.joints:
-        if joint.name in joints.forward:
-            continue
-        child = links.forward.get(joint.child)
-        parent = links.forward.get(joint.parent)
+class _Matcher:
+    """The rules of the module documentation, run from work queues.
+
+    Each pair is followed up once (and a parent again when one of its joints pairs), so a
+    whole renamed tree takes linear time, not one pass over the robot per level.
+    """
+
+    def __init__(self, old: RobotDescription, new: RobotDescription, tolerance: float) -> None:
+        self.old, self.new, self.tolerance = old, new, tolerance
+        self.links = _Pairs([x.name for x in old.links], [x.name for x in new.links])
+        self.joints = _Pairs([x.name for x in old.joints], [x.name for x in new.joints])
+        # Matched parents whose unmatched child joints the grouped rule should look at.
+        self.parents: deque[tuple[str, str]] = deque()
+
+    def run(self) -> Matching:
+        while True:
+            self._sure_rules()
+            if self.links.queue or self.joints.queue:
+                continue
+            # Only once the tree said all it could: a root replaced by a new link above a renamed
+            # one must not pair with it when the old root's children already told where it went.
+            self.links.pair(self.old.root, self.new.root)
+            if self.links.queue:
+                continue
+            if not self.parents:
+                return Matching(self.links.forward, self.joints.forward)
+            self._grouped_rule(*self.parents.popleft())
+
+    def _sure_rules(self) -> None:
+        old, new, links, joints = self.old, self.new, self.links, self.joints
+        while links.queue or joints.queue:
+            while joints.queue:
+                old_joint, new_joint = joints.queue.popleft()
+                a, b = old.joint(old_joint), new.joint(new_joint)
+                links.pair(a.parent, b.parent)
+                links.pair(a.child, b.child)
+                # One child fewer to pair under this parent: the grouped rule may now decide there.
+                parent = links.forward.get(a.parent)
+                if parent is not None:
+                    self.parents.append((a.parent, parent))
+            while links.queue:
+                old_link, new_link = links.queue.popleft()
+                self.parents.append((old_link, new_link))
+                edges = [old.parent_joint(old_link), *old.child_joints(old_link)]
+                for joint in edges:
+                    if joint is not None and joint.name not in joints.forward:
+                        self._same_edge(joint)
+
+    def _same_edge(self, joint: Joint) -> None:
+        """A link has one parent joint: when both ends map, the edge is the same joint renamed."""
+        child = self.links.forward.get(joint.child)
+        parent = self.links.forward.get(joint.parent)
         if child is None or parent is None:
-            continue
-        other = new.parent_joint(child)
+            return
+        other = self.new.parent_joint(child)
         if other is not None and other.parent == parent and other.type is joint.type:
-            joints.pair(joint.name, other.name)
+            self.joints.pair(joint.name, other.name)
 
-
-def _grouped_rule(old: RobotDescription, new: RobotDescription, links: _Pairs, joints: _Pairs,
-                  tolerance: float) -> None:
-    # Only once the tree said all it could: a root replaced by a new link above a renamed one
-    # must not pair with it when the old root's children already told where it went.
-    links.pair(old.root, new.root)
-    for old_parent, new_parent in list(links.forward.items()):
-        olds = [j for j in old.child_joints(old_parent)
+    def _grouped_rule(self, old_parent: str, new_parent: str) -> None:
+        links, joints, tolerance = self.links, self.joints, self.tolerance
+        olds = [j for j in self.old.child_joints(old_parent)
                 if j.name not in joints.forward and j.child not in links.forward]
-        news = [j for j in new.child_joints(new_parent)
+        news = [j for j in self.new.child_joints(new_parent)
                 if j.name not in joints.taken and j.child not in links.taken]
         for kind in sorted({j.type for j in olds}, key=lambda t: t.value):
             a = [j for j in olds if j.type is kind]
@@ -102,14 +139,4 @@ def _grouped_rule(old: RobotDescription, new: RobotDescription, links: _Pairs, j
 
 def match(old: RobotDescription, new: RobotDescription, tolerance: float) -> Matching:
     """Pair the links and joints of ``old`` with those of ``new`` (see the module documentation)."""
-    links = _Pairs([x.name for x in old.links], [x.name for x in new.links])
-    joints = _Pairs([x.name for x in old.joints], [x.name for x in new.joints])
-    while True:
-        links.grew = joints.grew = False
-        _sure_rules(old, new, links, joints)
-        if links.grew or joints.grew:
-            continue
-        _grouped_rule(old, new, links, joints, tolerance)
-        if not (links.grew or joints.grew):
-            break
-    return Matching(links.forward, joints.forward)
+    return _Matcher(old, new, tolerance).run()
