@@ -94,12 +94,12 @@ def _follow(node: Any, viewer: Any) -> Any:
     return node.create_subscription(JointState, "joint_states", on_state, 10)
 
 
-def _tf_loop(buffer: Any, viewer: Any, stop: threading.Event) -> None:
+def _tf_loop(buffer: Any, viewer: Any, fixed_frame: str | None, stop: threading.Event) -> None:
     from robotmodel.errors import TransformException
     from robotmodel.time import Time
 
     while not stop.wait(_TF_PERIOD):
-        fixed = viewer.description.root  # frames are placed from the robot's root, as rviz's fixed frame
+        fixed = fixed_frame or viewer.description.root  # rviz's Fixed Frame
         poses = {}
         for frame in buffer.all_frame_names():
             try:
@@ -108,6 +108,9 @@ def _tf_loop(buffer: Any, viewer: Any, stop: threading.Event) -> None:
                 continue
             poses[frame] = _matrix(t)
         viewer.show_tf(poses)
+        root = viewer.description.root
+        if root in poses:  # the robot is drawn where the fixed frame sees its root, as in rviz
+            viewer.place_robot(poses[root])
 
 
 def _matrix(t: Any) -> Any:
@@ -168,8 +171,8 @@ def serve_live(args: argparse.Namespace, desc: Any, initial: dict[str, float], f
 
             buffer = Buffer()
             closers.insert(0, TransformListener(buffer, node))
-            thread = threading.Thread(target=_tf_loop, args=(buffer, viewer, stop), daemon=True)
-            thread.start()
+            fixed_frame = getattr(args, "fixed_frame", None)
+            threading.Thread(target=_tf_loop, args=(buffer, viewer, fixed_frame, stop), daemon=True).start()
         print(viewer.url, flush=True)
         if args.open:
             viewer.open()

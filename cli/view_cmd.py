@@ -39,6 +39,8 @@ def add_viewer_arguments(parser: argparse.ArgumentParser, *, live_flags: bool = 
         parser.add_argument("--follow", action="store_true",
                             help="draw the robot from /joint_states on the bus")
         parser.add_argument("--tf", action="store_true", help="draw the frames on /tf and /tf_static")
+        parser.add_argument("--fixed-frame", metavar="FRAME",
+                            help="the frame --tf draws from, as rviz's Fixed Frame (default: the robot's root)")
         parser.add_argument("--publish", action="store_true", help="publish the sliders' values on /joint_states")
 
 

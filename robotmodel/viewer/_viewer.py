@@ -105,7 +105,6 @@ class Viewer:
             server.call_soon(redraw)
 
     # ----- building -------------------------------------------------------------------------------------------
-
     def _fill_store(self) -> None:
         store = self._store
         for path, command in self.scene.objects:
@@ -136,7 +135,6 @@ class Viewer:
         }
 
     # ----- joint updates --------------------------------------------------------------------------------------
-
     @property
     def positions(self) -> dict[str, float]:
         """The latest position of every independent joint."""
@@ -252,7 +250,6 @@ class Viewer:
                 self.show_visuals(visible)
 
     # ----- visibility -----------------------------------------------------------------------------------------
-
     def _set_property_commands(self, items: list[tuple[str, bool]]) -> list[bytes]:
         commands = []
         for path, visible in items:
@@ -285,14 +282,20 @@ class Viewer:
             if name in self._frame_objects:
                 continue
             self._frame_objects.add(name)
-            for sub, command, transform in frame_objects(self.scene.group(name, "frame"), name, self._frame_size):
-                self._store.objects[sub] = command
-                commands.append(command)
-                if transform is not None:
-                    self._store.transforms[sub] = transform
-                    commands.append(transform)
+            commands += self._add_frame(self.scene.group(name, "frame"), name)
         shown = [n for n in links if n in self._frame_objects]
         return commands + self._set_property_commands([(self.scene.group(n, "frame"), n in chosen) for n in shown])
+
+    def _add_frame(self, path: str, name: str) -> list[bytes]:
+        """Store a named triad under ``path``; returns its commands (call under the lock)."""
+        commands = []
+        for sub, command, transform in frame_objects(path, name, self._frame_size):
+            self._store.objects[sub] = command
+            commands.append(command)
+            if transform is not None:
+                self._store.transforms[sub] = transform
+                commands.append(transform)
+        return commands
 
     def show_frames(self, frames: FramesSpec = "all") -> None:
         """Show axis triads with names: ``"all"``, ``"none"`` (or None), or an iterable of link names."""
@@ -329,12 +332,7 @@ class Viewer:
                 path = wire.path_of(TF_ROOT, name)
                 matrix = np.asarray(pose, dtype=np.float64)
                 if name not in self._tf:
-                    for sub, command, transform in frame_objects(path, name, 0.1):
-                        self._store.objects[sub] = command
-                        commands.append(command)
-                        if transform is not None:
-                            self._store.transforms[sub] = transform
-                            commands.append(transform)
+                    commands += self._add_frame(path, name)
                 elif np.array_equal(self._tf[name], matrix):
                     continue
                 self._tf[name] = matrix
@@ -344,8 +342,17 @@ class Viewer:
         if commands:
             self._send(commands)
 
-    # ----- output ---------------------------------------------------------------------------------------------
+    def place_robot(self, pose: npt.ArrayLike) -> None:
+        """Put the robot's root at ``pose`` (4×4) in the scene: rviz's fixed frame is then not the root."""
+        path = wire.path_of(ROOT)
+        command = wire.set_transform(path, np.asarray(pose, dtype=np.float64))
+        with self._lock:
+            if self._store.transforms.get(path) == command:
+                return
+            self._store.transforms[path] = command
+        self._send([command])
 
+    # ----- output ---------------------------------------------------------------------------------------------
     def commands(self) -> list[bytes]:
         """The current scene as packed meshcat commands (what a newly connected page receives)."""
         with self._lock:
@@ -353,9 +360,7 @@ class Viewer:
 
     def static_html(self) -> str:
         """One self-contained HTML page of the current scene, viewable offline."""
-        with self._lock:
-            commands = self._store.commands()
-        return static_page(f"{self.description.name} — robotmodel", commands)
+        return static_page(f"{self.description.name} — robotmodel", self.commands())
 
     @property
     def url(self) -> str | None:

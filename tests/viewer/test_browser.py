@@ -165,7 +165,7 @@ def test_follow_and_tf_with_the_robot_from_robot_description(bus: Bus) -> None:
     arm = str(BUNDLED / "arm.urdf.xacro")
     bus.robotmodel("robot-state-publisher", arm)
     bus.robotmodel("joint-state-publisher", arm, "--zeros", "arm_shoulder_joint=0.5", "arm_elbow_joint=-0.7")
-    view = bus.robotmodel("view", "--follow", "--tf", "--port", "0")
+    view = bus.robotmodel("view", "--follow", "--tf", "--fixed-frame", "arm_upper_link", "--port", "0")
     url = view.wait_line(r"^http://127\.0\.0\.1:\d+/$", timeout=120).group(0)
     try:
         with Browser(timeout=60) as browser:
@@ -176,15 +176,21 @@ def test_follow_and_tf_with_the_robot_from_robot_description(bus: Bus) -> None:
             drawn = browser.wait_for("""(() => { const n = viewer.scene_tree.find(["tf", "gripper_palm_link"]);
                 return n.object.matrix.elements[15] === 1 && n.object.position.lengthSq() > 0
                     && Array.from(n.object.matrix.elements); })()""", timeout=30)
+            placed = browser.wait_for("""(() => { const m = viewer.scene_tree.find(["robot"]).object.matrix;
+                return m.elements[14] !== 0 && Array.from(m.elements); })()""", timeout=30)
     finally:
         code = view.stop(signal.SIGINT)
     assert code == 0, view.err[-20:]
     from robotmodel.kinematics import KinematicModel, KinematicState
 
     desc = load(BUNDLED / "arm.urdf.xacro")
-    expected = KinematicState(KinematicModel(desc)).update(
-        {"arm_shoulder_joint": 0.5, "arm_elbow_joint": -0.7}).link_matrix("gripper_palm_link")
+    state = KinematicState(KinematicModel(desc)).update({"arm_shoulder_joint": 0.5, "arm_elbow_joint": -0.7})
+    # Drawn from the fixed frame asked for: T_arm_upper_link_gripper_palm_link.
+    expected = np.linalg.inv(state.link_matrix("arm_upper_link")) @ state.link_matrix("gripper_palm_link")
     np.testing.assert_allclose(np.asarray(drawn).reshape(4, 4).T, expected, atol=1e-5)
+    # The robot is drawn from the same fixed frame: its root where arm_upper_link sees it.
+    root_in_fixed = np.linalg.inv(state.link_matrix("arm_upper_link")) @ state.link_matrix(desc.root)
+    np.testing.assert_allclose(np.asarray(placed).reshape(4, 4).T, root_in_fixed, atol=1e-5)
 
 
 def test_screenshot_command_writes_a_png_of_the_robot(tmp_path: Path) -> None:
