@@ -3,7 +3,9 @@
 One run of the ``robotmodel`` driver; its rules are :data:`robotmodel.check.RULES` (ids are
 the finding codes, with their help text); each finding is a result at its physical location.
 Paths below the working directory are written relative to ``%SRCROOT%`` (the repository
-root in CI), others as absolute ``file:`` URIs.
+root in CI), others as absolute ``file:`` URIs. Every result has a ``region.startLine``, as
+GitHub code scanning requires: a finding about a whole file gets line 1 and the property
+``wholeFile: true``.
 """
 
 from __future__ import annotations
@@ -45,17 +47,20 @@ def _artifact(file: str) -> dict[str, str]:
 
 
 def _result(finding: Finding, location: Location, rule_index: int) -> dict[str, Any]:
-    physical: dict[str, Any] = {"artifactLocation": _artifact(location.file)}
-    if location.line is not None:
-        physical["region"] = {"startLine": location.line}
+    # GitHub shows only results with a region.startLine: a finding about the whole file points at
+    # its first line and says so in its property bag.
+    physical = {"artifactLocation": _artifact(location.file), "region": {"startLine": location.line or 1}}
     text = finding.message if finding.element in ("", location.file) else f"{finding.element}: {finding.message}"
-    return {
+    result: dict[str, Any] = {
         "ruleId": finding.code,
         "ruleIndex": rule_index,
         "level": _LEVEL[finding.severity],
         "message": {"text": text},
         "locations": [{"physicalLocation": physical}],
     }
+    if location.line is None:
+        result["properties"] = {"wholeFile": True}
+    return result
 
 
 def to_sarif(items: Iterable[tuple[Finding, Location]], *, version: str) -> dict[str, Any]:

@@ -55,8 +55,11 @@ def _flat(log: dict[str, Any]) -> list[tuple[str, str, str, int | None, str]]:
         else:
             assert uri.startswith("file:///")
             uri = uri[len("file://"):]
-        region = physical.get("region")
-        rows.append((r["level"], r["ruleId"], uri, region["startLine"] if region else None, r["message"]["text"]))
+        line = physical["region"]["startLine"]  # GitHub requires one, even for a whole file
+        if r.get("properties", {}).get("wholeFile"):
+            assert line == 1
+            line = None
+        rows.append((r["level"], r["ruleId"], uri, line, r["message"]["text"]))
     return rows
 
 
