@@ -2,7 +2,7 @@
 
 Each child gets the demo's environment: its own rendezvous port and ``ROS_DOMAIN_ID``, and
 no zenoh configuration from the user's shell, so the demo neither joins nor disturbs
-another system. On Linux a child also gets SIGTERM when the demo itself dies, so not even
+another system. On Linux a child is also killed when the demo itself dies, so not even
 a ``kill -9`` of the demo leaves one running (children are started from the main thread:
 the kernel sends the signal when the thread that started a child ends).
 """
@@ -23,12 +23,15 @@ from pathlib import Path
 
 __all__ = ["Child", "Children", "private_bus_env"]
 
-# Sets PR_SET_PDEATHSIG (1) to SIGTERM, exits if the demo is already gone, then becomes the
+# Sets PR_SET_PDEATHSIG (1) to SIGKILL, exits if the demo is already gone, then becomes the
 # child proper: the setting survives exec. (A preexec_fn would do the same in the forked
-# child, but is unsafe while the demo's reader threads run.)
+# child, but is unsafe while the demo's reader threads run.) SIGKILL, not SIGTERM: this is
+# the path for a demo that could not clean up, and a child busy shutting down its bus
+# session when all its peers vanish at once may not act on a SIGTERM; the recording keeps
+# every chunk flushed so far either way.
 _LAUNCHER = (
     "import ctypes, os, signal, sys\n"
-    "ctypes.CDLL(None).prctl(1, signal.SIGTERM)\n"
+    "ctypes.CDLL(None).prctl(1, signal.SIGKILL)\n"
     "if os.getppid() != int(sys.argv[1]): sys.exit(1)\n"
     "os.execv(sys.argv[2], sys.argv[2:])\n"
 )

@@ -28,4 +28,5 @@ def assert_none_left(port: str, timeout: float = 10.0) -> None:
     deadline = time.monotonic() + timeout
     while leftovers(port) and time.monotonic() < deadline:
         time.sleep(0.2)
-    assert leftovers(port) == []
+    left = leftovers(port)
+    assert left == [], "\n".join(left)

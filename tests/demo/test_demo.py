@@ -143,3 +143,15 @@ def test_bad_options_are_one_line_errors(tmp_path: Path) -> None:
         assert done.returncode == 1
         assert done.stderr.strip().count("\n") == 0 and text in done.stderr, done.stderr
     assert (busy / "keep.txt").read_text() == "mine" and sorted(p.name for p in busy.iterdir()) == ["keep.txt"]
+
+
+def test_killing_the_demo_takes_its_children_down(tmp_path: Path) -> None:
+    proc = Proc([*DEMO, "--duration", "120", "--output", str(tmp_path / "demo")], _env(), tmp_path)
+    try:
+        header = proc.wait_line(r"private bus \(port (\d+)", timeout=60)
+        proc.wait_line(r"^viewer: http://127\.0\.0\.1:\d+/", timeout=90)
+        proc.kill()  # SIGKILL: no cleanup in the demo itself
+        # Each child was told by the kernel (parent-death signal) and stops on its own.
+        assert_none_left(header.group(1), timeout=20)
+    finally:
+        proc.kill()
