@@ -183,3 +183,26 @@ def test_readme_config_example_is_read(tmp_path: Path) -> None:
     config = read_config(tmp_path / "robotmodel.toml")
     assert [(e.file, e.args) for e in config.entries] == [
         (tmp_path / "urdf/robot.urdf.xacro", (("prefix", "left_"), ("use_gripper", "true")))]
+
+
+def test_corpus_ur_fragments_go_through_configured_variants(corpus: Path, tmp_path: Path,
+                                                            monkeypatch: pytest.MonkeyPatch,
+                                                            capsys: pytest.CaptureFixture[str]) -> None:
+    """UR's macro files, as a pre-commit run passes them, are checked as the configured UR variants."""
+    urdf = corpus / "Universal_Robots_ROS2_Description" / "ur_description" / "urdf"
+    (tmp_path / "robotmodel.toml").write_text(
+        f'[[entry]]\nfile = "{urdf / "ur.urdf.xacro"}"\nargs = {{ ur_type = "ur3", name = "ur" }}\n'
+        f'[[entry]]\nfile = "{urdf / "ur.urdf.xacro"}"\nargs = {{ ur_type = "ur5e", name = "ur" }}\n')
+    monkeypatch.chdir(tmp_path)
+    fragments = [str(urdf / "ur_macro.xacro"), str(urdf / "inc" / "ur_common.xacro")]
+    assert all(is_macro_only(f) for f in fragments)
+    assert main(["check-urdf", *fragments]) == 0
+    out, err = capsys.readouterr()
+    assert out == _singles(capsys, [str(urdf / "ur.urdf.xacro"), "ur_type:=ur3", "name:=ur"],
+                           [str(urdf / "ur.urdf.xacro"), "ur_type:=ur5e", "name:=ur"])
+    assert err.splitlines()[-1].startswith(f"{PREFIX}2 files checked: 2 passed, 0 failed (0 errors, ")
+    assert "fragment-not-checked" not in err
+    # A UR file no configured variant includes is reported, not checked alone.
+    mock = str(urdf / "ros2_control_mock_hardware.xacro")
+    assert main(["check-urdf", mock]) == 0
+    assert f"[fragment-not-checked] {mock}: " in capsys.readouterr().err
