@@ -124,7 +124,11 @@ def _includes_of(job: CheckJob) -> list[str] | None:
 
 
 def _map(func: Any, jobs: Sequence[CheckJob], workers: int) -> Iterator[Any]:
-    """``func`` over ``jobs`` in order; in a process pool when there is more than one to run."""
+    """``func`` over ``jobs`` in order; in a process pool when there is more than one to run.
+
+    Processes, not threads: lint and parsing hold the GIL, and each xacro expansion is a child
+    process already. Results come back in input order, so output never interleaves.
+    """
     if workers <= 1 or len(jobs) <= 1:
         yield from map(func, jobs)
         return
@@ -164,9 +168,9 @@ def run(args: argparse.Namespace) -> int:
     base = CheckJob("", package_paths=tuple(package_paths), untrusted=args.untrusted, strict=args.strict,
                     locate=args.format != "text")
     files = expand_files(args.files)
-    workers = args.jobs if args.jobs > 0 else (os.cpu_count() or 1)
-    jobs, orphans = plan_checks(files, base, args.mappings, config,
-                                lambda entry_jobs: list(_map(_includes_of, entry_jobs, workers)))
+    jobs, orphans = plan_checks(
+        files, base, args.mappings, config,
+        lambda entry_jobs: list(_map(_includes_of, entry_jobs, _workers(args, len(entry_jobs)))))
     unchecked = [_orphan(f, args.strict) for f in orphans]
     # One FILE checked once prints exactly what check-urdf always printed for it (no summary).
     many = not (len(jobs) == 1 and not unchecked and len(args.files) == 1)
@@ -181,7 +185,7 @@ def _emit(args: argparse.Namespace, reports: Iterator[FileReport], unchecked: li
     if args.format == "text":
         for report in reports:
             done.append(report)
-            if report.ok and report.error is None:
+            if report.ok:  # as check_urdf: the tree only for a robot that passes
                 sys.stdout.write(report.tree_text)
                 sys.stdout.flush()
             for line in text_lines(report, args.command, many=many):
