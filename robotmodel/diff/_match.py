@@ -8,8 +8,11 @@ A rename is found from the tree, never from names alone:
   is the same joint under a new name;
 - when those found nothing more: the two roots, if neither is matched yet, are the same link;
 - and when a joint and its child link were both renamed, the unmatched joints under the same
-  (mapped) parent with the same type pair up when there is one on each side, or, among
-  several, when exactly one pair has the same origin.
+  (mapped) parent with the same type pair up when there is one on each side; among several,
+  a pair that is alike and unique on both sides pairs up, likeness growing finer until the
+  rest is one on each side: the same origin; then also a child link with the same inertial,
+  visuals, collisions and number of child joints; then joint names that are one another
+  with a prefix or suffix added (a tf_prefix, a namespace).
 
 The rules repeat until nothing more pairs up, so a rename deep in the tree is found from
 either end.
@@ -115,7 +118,7 @@ class _Matcher:
             self.joints.pair(joint.name, other.name)
 
     def _grouped_rule(self, old_parent: str, new_parent: str) -> None:
-        links, joints, tolerance = self.links, self.joints, self.tolerance
+        links, joints = self.links, self.joints
         olds = [j for j in self.old.child_joints(old_parent)
                 if j.name not in joints.forward and j.child not in links.forward]
         news = [j for j in self.new.child_joints(new_parent)
@@ -123,18 +126,42 @@ class _Matcher:
         for kind in sorted({j.type for j in olds}, key=lambda t: t.value):
             a = [j for j in olds if j.type is kind]
             b = [j for j in news if j.type is kind]
-            if len(a) == 1 and len(b) == 1:
-                pairs = [(a[0], b[0])]
-            else:
-                pairs = []
-                for ja in a:
-                    same = [jb for jb in b if _same_origin(ja.origin, jb.origin, tolerance)]
-                    back = [jx for jx in a if same and _same_origin(jx.origin, same[0].origin, tolerance)]
-                    if len(same) == 1 and len(back) == 1:
-                        pairs.append((ja, same[0]))
-            for ja, jb in pairs:
+            for ja, jb in self._pair_up(a, b):
                 joints.pair(ja.name, jb.name)
                 links.pair(ja.child, jb.child)
+
+    def _pair_up(self, a: list[Joint], b: list[Joint]) -> list[tuple[Joint, Joint]]:
+        """Pairs among same-type sibling joints: one on each side, else by ever finer likeness."""
+        pairs: list[tuple[Joint, Joint]] = []
+        for alike in (self._same_origin, self._same_body, _same_stem):
+            if len(a) == 1 and len(b) == 1:
+                break
+            for ja in list(a):
+                same = [jb for jb in b if alike(ja, jb)]
+                if len(same) == 1 and [jx for jx in a if alike(jx, same[0])] == [ja]:
+                    pairs.append((ja, same[0]))
+                    a.remove(ja)
+                    b.remove(same[0])
+        if len(a) == 1 and len(b) == 1:
+            pairs.append((a[0], b[0]))
+        return pairs
+
+    def _same_origin(self, a: Joint, b: Joint) -> bool:
+        return _same_origin(a.origin, b.origin, self.tolerance)
+
+    def _same_body(self, a: Joint, b: Joint) -> bool:
+        """Same origin, and a child link with the same inertial, shapes and number of child joints."""
+        if not self._same_origin(a, b):
+            return False
+        la, lb = self.old.link(a.child), self.new.link(b.child)
+        return (la.inertial, la.visuals, la.collisions, len(self.old.child_joints(a.child))) == (
+            lb.inertial, lb.visuals, lb.collisions, len(self.new.child_joints(b.child)))
+
+
+def _same_stem(a: Joint, b: Joint) -> bool:
+    """One name is the other with a prefix or suffix added (a tf_prefix, a namespace, ``_v2``)."""
+    short, long = sorted((a.name, b.name), key=len)
+    return short != long and (long.startswith(short) or long.endswith(short))
 
 
 def match(old: RobotDescription, new: RobotDescription, tolerance: float) -> Matching:
