@@ -74,6 +74,11 @@ def _line(text: str, offset: int) -> int:
     return text.count("\n", 0, offset) + 1
 
 
+def _start(tag: str) -> str:
+    """A start tag of the element ``tag``; a joint must have a type (a transmission's <joint> has none)."""
+    return rf"<{tag}\b(?=[^>]*\stype\s*=)" if tag == "joint" else rf"<{tag}\b"
+
+
 def _quoted(value: str) -> str:
     return rf"(?:\"{re.escape(value)}\"|'{re.escape(value)}')"
 
@@ -121,7 +126,7 @@ class SourceIndex:
 
     def locate(self, tag: str, name: str) -> Location:
         """Where the ``tag`` element named ``name`` is written or made (see the module's order)."""
-        written = re.compile(rf"<{tag}\b[^>]*?\sname\s*=\s*{_quoted(name)}")
+        written = re.compile(rf"{_start(tag)}[^>]*?\sname\s*=\s*{_quoted(name)}")
         called = re.compile(rf"<xacro:(?!(?:{_DIRECTIVES})\b)[\w.-]+\b[^>]*?\sname\s*=\s*{_quoted(name)}")
         for with_includes in (False, True):
             for pattern in (written, called):
@@ -162,7 +167,7 @@ class SourceIndex:
         return None
 
     def _templates(self, tag: str) -> Iterator[tuple[str, int, str]]:
-        element = re.compile(rf"<{tag}\b[^>]*?\sname\s*=\s*(\"[^\"]*\"|'[^']*')")
+        element = re.compile(rf"{_start(tag)}[^>]*?\sname\s*=\s*(\"[^\"]*\"|'[^']*')")
         for file, text in self._sources(with_includes=True):
             for pattern in (element, _CALL_NAME):
                 for match in pattern.finditer(text):

@@ -210,3 +210,24 @@ def test_example_robot_data_annotations(capsys: pytest.CaptureFixture[str]) -> N
     assert by_file == {}
     assert code == max(codes) == 1  # files with mimics of missing joints, a robot without a name
     assert ERD_ROBOTS.is_dir()
+
+
+def test_a_transmission_joint_is_not_the_joint(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+                                               capsys: pytest.CaptureFixture[str]) -> None:
+    """A <transmission> written first names the joint too (without a type): the annotation is on the joint."""
+    text = """<robot name="r">
+  <transmission name="t"><type>transmission_interface/SimpleTransmission</type>
+    <joint name="j"><hardwareInterface>EffortJointInterface</hardwareInterface></joint>
+  </transmission>
+  <link name="a"/>
+  <link name="b"><inertial><mass value="1"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link>
+  <joint
+      name="j" type="revolute"><parent link="a"/><child link="b"/><limit effort="0" velocity="1"/></joint>
+</robot>
+"""
+    (tmp_path / "r.urdf").write_text(text)
+    monkeypatch.chdir(tmp_path)
+    assert main(["check-urdf", "--format", "github", "r.urdf"]) == 0
+    (got,) = parse_github(capsys.readouterr().out)
+    joint_line = next(i for i, line in enumerate(text.splitlines(), 1) if line.strip() == "<joint")
+    assert (got.title, got.line) == ("limit-zero-effort", joint_line)
