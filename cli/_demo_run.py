@@ -21,6 +21,7 @@ __all__ = ["Demo"]
 
 _ECHO_EVERY_S = 5.0  # how often the live tf2_echo line is printed when stdout is not a terminal
 _READY_S = 60.0
+_TASKS = ("view_frames", "screenshot")
 
 
 def _out_dir(text: str | None) -> Path:
@@ -87,6 +88,7 @@ class Demo:
         self.url: str | None = None
         self.files: list[tuple[str, Path]] = []
         self.notes: list[str] = []
+        self.elapsed = 0.0
 
     def _on_signal(self, signum: int, frame: FrameType | None) -> None:
         del signum, frame
@@ -107,12 +109,16 @@ class Demo:
             self._run_until(started + self.args.duration)
         finally:
             self.echo.end()
+            self.elapsed = time.monotonic() - started
+            # view_frames and the screenshot end by themselves; stopped half-way, they did not fail.
+            cut = {c.name for c in self.children.started if c.name in _TASKS and c.popen.poll() is None}
             codes = self.children.stop_all(last=("record",))
             for signum, handler in old.items():
                 signal.signal(signum, handler)
-        failed = {n: c for n, c in codes.items() if c not in (0, -signal.SIGINT, 130)}
+        failed = {n: c for n, c in codes.items() if c not in (0, -signal.SIGINT, 130) and n not in cut}
         for name, code in failed.items():
             self.notes.append(f"{name} exited with {code} (see logs/{name}.log)")
+        self._collect(cut)
         self._offline()
         self._report()
         return 0 if not failed else 1
@@ -175,20 +181,32 @@ class Demo:
                 shot = self._start_screenshot()
             if now >= end:
                 break
-        if shot is not None and not self.stop.is_set():
+        if shot is not None:
             self._wait(shot, 120.0)
-            if (self.out / "viewer.png").exists():
-                self.files.append(("viewer screenshot", self.out / "viewer.png"))
-            else:
-                self.notes.append(f"no screenshot: {' '.join(shot.lines[-1:]) or 'see logs/screenshot.log'}")
         if frames_child is not None:
             self._wait(frames_child, 30.0)
-            for suffix, what in ((".gv", "frame tree (graphviz)"), (".pdf", "frame tree (PDF)")):
-                path = self.out / f"frames{suffix}"
-                if path.exists():
-                    self.files.append((what, path))
-            if not (self.out / "frames.pdf").exists():
-                self.notes.append("no frames.pdf: graphviz's dot is not installed")
+
+    def _collect(self, cut: set[str]) -> None:
+        """List the files the tasks left, and say why one is missing."""
+        import shutil
+
+        shot = self.out / "viewer.png"
+        if shot.exists():
+            self.files.append(("viewer screenshot", shot))
+        elif "screenshot" in cut:
+            self.notes.append("no screenshot: stopped before the page was drawn")
+        else:
+            lines = [c.lines[-1:] for c in self.children.started if c.name == "screenshot"]
+            if lines:
+                self.notes.append(f"no screenshot: {' '.join(lines[0]) or 'see logs/screenshot.log'}")
+        for suffix, what in ((".gv", "frame tree (graphviz)"), (".pdf", "frame tree (PDF)")):
+            path = self.out / f"frames{suffix}"
+            if path.exists():
+                self.files.append((what, path))
+        if "view_frames" in cut:
+            self.notes.append("no frame tree: stopped before view_frames finished listening")
+        elif (self.out / "frames.gv").exists() and not (self.out / "frames.pdf").exists() and not shutil.which("dot"):
+            self.notes.append("no frames.pdf: graphviz's dot is not installed")
 
     def _wait(self, child: Child, timeout: float) -> None:
         """Wait for a child that ends by itself, giving up early on Ctrl-C."""
@@ -213,7 +231,7 @@ class Demo:
         mcap = self.out / "demo.mcap"
         if not mcap.exists():
             return
-        at = f"+{self.args.duration / 2:g}"
+        at = f"+{round(min(self.args.duration, self.elapsed) / 2, 1):g}"  # half-way through what ran
         argv = [sys.executable, "-m", "robotmodel.cli.main", "tf2-echo", "--bag", str(mcap), "map",
                 "base_footprint", "--time", at, "--no-progress"]
         print(f"\noffline, from the recording: where was base_footprint in map {at[1:]} s into it?", flush=True)
