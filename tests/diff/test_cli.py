@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 from conftest import BUNDLED, erd_urdfs
-from diff.pairs import PANDA, UR5, UR5_LIMITED, edited, element, expanded, links_below, run, write
+from diff.pairs import PANDA, UR5, UR5_LIMITED, edited, element, expanded, links_below, run, run_process, write
 
 XACRO = ('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
          '<xacro:arg name="p" default="a_"/><xacro:arg name="z" default="3"/>'
@@ -24,7 +24,7 @@ def test_identical_descriptions_exit_0_and_print_nothing(tmp_path: Path, name: s
     """The same file twice, and the xacro against upstream xacro's expansion of it."""
     urdf = write(tmp_path, "expanded.urdf", expanded(name))
     for old, new in ((BUNDLED / name, BUNDLED / name), (BUNDLED / name, urdf)):
-        done = run(str(old), str(new), cwd=tmp_path)
+        done = run_process(str(old), str(new), cwd=tmp_path)
         assert (done.returncode, done.stdout, done.stderr) == (0, "", "")
     done = run(str(BUNDLED / name), str(urdf), "--format", "json", cwd=tmp_path)
     assert done.returncode == 0
@@ -56,8 +56,8 @@ def test_xacro_arguments_apply_to_both_sides(tmp_path: Path) -> None:
 
 def test_stdin_as_either_side(tmp_path: Path) -> None:
     text = PANDA.read_text()
-    assert run("-", str(PANDA), cwd=tmp_path, stdin=text).returncode == 0
-    done = run(str(UR5), "-", cwd=tmp_path, stdin=UR5_LIMITED.read_text())
+    assert run_process("-", str(PANDA), cwd=tmp_path, stdin=text).returncode == 0
+    done = run_process(str(UR5), "-", cwd=tmp_path, stdin=UR5_LIMITED.read_text())
     assert done.returncode == 1 and done.stdout.splitlines()[1].startswith("+++ - (robot 'ur5'")
 
 
@@ -80,7 +80,7 @@ def test_errors_exit_2_with_one_line(tmp_path: Path, args: list[str], message: s
     write(tmp_path, "cycle.urdf", "<robot name='c'><link name='a'/><link name='b'/>"
           "<joint name='j1' type='fixed'><parent link='a'/><child link='b'/></joint>"
           "<joint name='j2' type='fixed'><parent link='b'/><child link='a'/></joint></robot>")
-    done = run(*args, cwd=tmp_path)
+    done = run_process(*args, cwd=tmp_path)
     assert done.returncode == 2 and done.stdout == ""
     assert len(done.stderr.splitlines()) == 1, done.stderr
     assert done.stderr.startswith("robotmodel diff: error: ") and message in done.stderr
