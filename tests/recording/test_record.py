@@ -196,3 +196,48 @@ def test_kill_9_leaves_every_flushed_chunk_readable(bus, tmp_path):
         w.finish()
     loaded = load_recording(fixed, progress=False)
     assert loaded.transforms >= 20
+
+
+def test_other_topics_are_subscribed_once_the_graph_names_their_type(bus, tmp_path, monkeypatch):
+    import threading
+    import time
+
+    from robotmodel.bus import Node
+    from robotmodel.msgs import String
+
+    for key in ("ROBOTMODEL_ZENOH_PORT", "ROS_DOMAIN_ID"):
+        monkeypatch.setenv(key, bus.env[key])
+    out = tmp_path / "chatter.mcap"
+    rec = bus.robotmodel("record", "-o", str(out), "--flush-interval", "0.2", "/chatter", "/tf")
+    rec.wait_line(r"Subscribed to topic '/tf'", stream="err", timeout=60)
+    pace = threading.Event()
+    with Node("talker") as node:
+        pub = node.create_publisher(String, "/chatter", 10)
+        deadline = time.monotonic() + 60
+        while not any(t == "/chatter" for t, _, _ in (readable(out) if out.exists() else [])):
+            assert time.monotonic() < deadline, f"/chatter never recorded: {rec.err[-5:]}"
+            pub.publish(String(data="hello"))
+            pace.wait(0.1)  # publishing pace, not a wait for the condition
+        # Stopped while the talker is still there: a node leaving the graph while another process
+        # shuts down can make zenoh's callback thread abort that process at exit (a bus issue).
+        assert rec.stop(signal.SIGINT) == 0, rec.err[-20:]
+    assert any("Subscribed to topic '/chatter'" in line for line in rec.err)
+    from rosbags.rosbag2 import Reader
+
+    with Reader(out) as r:
+        types = {c.topic: c.msgtype for c in r.connections}
+        texts = {TS2.deserialize_cdr(raw, c.msgtype).data for c, _, raw in r.messages() if c.topic == "/chatter"}
+    assert types == {"/chatter": "std_msgs/msg/String", "/tf": TF}
+    assert texts == {"hello"}
+
+
+def test_existing_output_is_not_overwritten(tmp_path):
+    import subprocess
+    import sys
+
+    out = tmp_path / "there.mcap"
+    out.write_bytes(b"keep")
+    proc = subprocess.run([sys.executable, "-m", "robotmodel.cli.main", "record", "-o", str(out)], check=False,
+                          capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 1 and "already exists" in proc.stderr
+    assert out.read_bytes() == b"keep"
