@@ -61,8 +61,10 @@ class SensorSimulator:
         self.x += v * math.cos(self.theta) * dt
         self.y += v * math.sin(self.theta) * dt
         self.theta += w * dt
-        self.left_wheel += (v - w * WHEEL_SEPARATION / 2) / WHEEL_RADIUS * dt
-        self.right_wheel += (v + w * WHEEL_SEPARATION / 2) / WHEEL_RADIUS * dt
+        left_speed = (v - w * WHEEL_SEPARATION / 2) / WHEEL_RADIUS
+        right_speed = (v + w * WHEEL_SEPARATION / 2) / WHEEL_RADIUS
+        self.left_wheel += left_speed * dt
+        self.right_wheel += right_speed * dt
         now = stamp.to_msg()
         q = quaternion_from_euler(0.0, 0.0, self.theta)
 
@@ -91,8 +93,7 @@ class SensorSimulator:
         joints.header.stamp = now
         joints.name = ["left_wheel_joint", "right_wheel_joint"]
         joints.position = [self.left_wheel, self.right_wheel]
-        joints.velocity = [(v - w * WHEEL_SEPARATION / 2) / WHEEL_RADIUS,
-                           (v + w * WHEEL_SEPARATION / 2) / WHEEL_RADIUS]
+        joints.velocity = [left_speed, right_speed]
         self.joint_pub.publish(joints)
 
 
