@@ -56,9 +56,19 @@ def _locate(path: Path) -> tuple[Path, str]:
 def _export(top: Path, commit: str, into: Path) -> None:
     excluded = [f":(exclude,icase,glob)**/*.{suffix}" for suffix in _MESH_SUFFIXES]
     data = _git(["archive", "--format=tar", commit, "--", ".", *excluded], top, f"git archive {commit}")
-    with tarfile.open(fileobj=io.BytesIO(data)) as archive:
-        # The 'data' filter refuses absolute paths, links out of the folder and device files.
-        archive.extractall(into, filter="data")
+    try:
+        with tarfile.open(fileobj=io.BytesIO(data)) as archive:
+            archive.extractall(into, filter=_inside)
+    except (tarfile.TarError, OSError) as exc:
+        raise RevisionError(f"git archive {commit}: cannot unpack: {exc}") from None
+
+
+def _inside(member: tarfile.TarInfo, dest: str) -> tarfile.TarInfo | None:
+    """The 'data' filter of tarfile, skipping (not failing on) what it refuses: a link out of the tree, a device."""
+    try:
+        return tarfile.data_filter(member, dest)
+    except tarfile.FilterError:
+        return None
 
 
 def load_revision(

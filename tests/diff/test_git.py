@@ -133,3 +133,12 @@ def test_broken_xacro_at_the_revision_names_it_by_revision(repo: Path) -> None:
     assert done.returncode == 2 and len(done.stderr.splitlines()) == 1, done.stderr
     assert "robotmodel-diff-" not in done.stderr
     assert "HEAD:arm_description/urdf/arm.urdf.xacro" in done.stderr and "no_such_macro" in done.stderr
+
+
+def test_links_out_of_the_repository_are_skipped_not_fatal(repo: Path) -> None:
+    """A symlink to an absolute path (e.g. into /opt/ros) is left out of the export; the rest still resolves."""
+    (repo / "arm_description" / "urdf" / "ros").symlink_to("/opt/ros/humble/share")
+    (repo / "arm_description" / "escape").symlink_to("../../..")
+    _commit(repo, "links")
+    done = run("--git", "HEAD", "arm_description/urdf/arm.urdf.xacro", cwd=repo)
+    assert (done.returncode, done.stdout, done.stderr) == (0, "", "")
