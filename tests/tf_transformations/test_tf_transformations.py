@@ -171,3 +171,17 @@ def test_bad_axes() -> None:
         tft.euler_matrix(0, 0, 0, "sxxz")
     with pytest.raises(ValueError, match="tuple"):
         tft.euler_from_matrix(np.eye(4), (3, 0, 0, 0))
+
+
+def test_public_surface() -> None:
+    # The names ported code imports; each documented.
+    assert set(tft.__all__) == {
+        "AXES", "concatenate_matrices", "euler_from_matrix", "euler_from_quaternion", "euler_matrix",
+        "identity_matrix", "inverse_matrix", "is_same_transform", "quaternion_about_axis", "quaternion_conjugate",
+        "quaternion_from_euler", "quaternion_from_matrix", "quaternion_inverse", "quaternion_matrix",
+        "quaternion_multiply", "quaternion_slerp", "random_quaternion", "random_rotation_matrix", "random_vector",
+        "rotation_from_matrix", "rotation_matrix", "scale_matrix", "translation_from_matrix", "translation_matrix",
+        "unit_vector", "vector_norm"}
+    for name in tft.__all__:
+        if name != "AXES":
+            assert getattr(tft, name).__doc__, name
