@@ -82,7 +82,9 @@ def load_revision(
     repository, unknown revision, path absent at that revision), and the loading errors of
     :func:`robotmodel.load` otherwise, their file names written ``REV:path``.
     """
-    file = Path(path).absolute()
+    given = Path(path).absolute()
+    # The folder resolved as git reports the top (through symlinks such as /tmp → /private/tmp).
+    file = given.parent.resolve() / given.name
     top, relative = _locate(file)
     label = f"{revision}:{relative}"
     commit = _git(["rev-parse", "--verify", "--quiet", "--end-of-options", f"{revision}^{{commit}}"], top,

@@ -142,3 +142,13 @@ def test_links_out_of_the_repository_are_skipped_not_fatal(repo: Path) -> None:
     _commit(repo, "links")
     done = run("--git", "HEAD", "arm_description/urdf/arm.urdf.xacro", cwd=repo)
     assert (done.returncode, done.stdout, done.stderr) == (0, "", "")
+
+
+def test_repository_reached_through_a_symlinked_folder(repo: Path, tmp_path: Path) -> None:
+    alias = tmp_path / "alias"
+    alias.symlink_to(repo)
+    arm = alias / "arm_description" / "urdf" / "arm.urdf.xacro"
+    arm.write_text(arm.read_text().replace('upper="${2.5}"', 'upper="${2.0}"'))
+    code, report = run_json("--git", "HEAD", str(arm), cwd=tmp_path)
+    assert code == 1 and report["old"]["source"] == "HEAD:arm_description/urdf/arm.urdf.xacro"
+    assert list(changes(report, "joints")) == ["arm_elbow_joint"]
