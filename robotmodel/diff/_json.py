@@ -1,23 +1,4 @@
-"""The diff as JSON for scripts: every key always present, lists in a fixed order.
-
-Shape (``diff_json``)::
-
-    {"equal": bool, "tolerance": float,
-     "old": {"source", "robot", "root"}, "new": {...},
-     "robot": [change...],                       # the robot's name, when it changed
-     "links" | "joints" | "materials": {
-         "added": [summary...], "removed": [summary...],
-         "renamed": [{"old", "new"}...],
-         "changed": [{"old", "new", "changes": [change...]}...]},
-     "poses": [{"link", "old_link", "translation_mm", "rotation_deg",
-                "old": {"xyz", "rpy"}, "new": {"xyz", "rpy"}}...]}
-
-A change is ``{"field", "old", "new", "unit", "delta", "delta_unit"}`` (``old``/``new``
-null where absent, ``delta`` null when no magnitude applies). Summaries: links
-``{"name"}``, joints ``{"name", "type", "parent", "child"}``, materials
-``{"name", "color", "texture"}``. Pose ``xyz`` is in metres and ``rpy`` in radians, as
-``robotmodel fk --format json`` gives them.
-"""
+"""The diff as JSON for scripts: every key always present, lists in a fixed order (see :func:`diff_json`)."""
 
 from __future__ import annotations
 
@@ -57,7 +38,26 @@ def _pose(pose: PoseChange) -> dict[str, Json]:
 
 
 def diff_json(diff: DescriptionDiff) -> dict[str, Json]:
-    """The diff as a JSON-ready dict (see the module documentation for its shape)."""
+    """The diff as a JSON-ready dict: every key always present, lists in a fixed order.
+
+    Shape::
+
+        {"equal": bool, "tolerance": float,
+         "old": {"source", "robot", "root"}, "new": {...},
+         "robot": [change...],                       # the robot's name, when it changed
+         "links" | "joints" | "materials": {
+             "added": [summary...], "removed": [summary...],
+             "renamed": [{"old", "new"}...],
+             "changed": [{"old", "new", "changes": [change...]}...]},
+         "poses": [{"link", "old_link", "translation_mm", "rotation_deg",
+                    "old": {"xyz", "rpy"}, "new": {"xyz", "rpy"}}...]}
+
+    A change is ``{"field", "old", "new", "unit", "delta", "delta_unit"}`` (``old``/``new``
+    null where absent, ``delta`` null when no magnitude applies). Summaries: links
+    ``{"name"}``, joints ``{"name", "type", "parent", "child"}``, materials
+    ``{"name", "color", "texture"}``. Pose ``xyz`` is in metres and ``rpy`` in radians, as
+    ``robotmodel fk --format json`` gives them.
+    """
     return {
         "equal": diff.equal,
         "tolerance": diff.tolerance,
