@@ -304,3 +304,23 @@ def test_removed_root_is_not_taken_for_the_renamed_link_below_it(tmp_path: Path)
     assert report["joints"]["removed"] == [{"name": "arm_mount_joint", "type": "fixed", "parent": "world",
                                             "child": "arm_base_link"}]
     assert report["links"]["added"] == report["joints"]["added"] == []
+
+
+def test_mimic_and_dynamics_changes_and_the_offset_they_move(tmp_path: Path) -> None:
+    """The right finger's mimic offset becomes 10 mm: at q = 0 it sits 10 mm along its axis (0 -1 0)."""
+    old = expanded("arm.urdf.xacro")
+
+    def change(root):
+        element(root, "joint", "gripper_right_finger_joint").find("mimic").attrib.update(multiplier="-1", offset="0.01")
+        element(root, "joint", "gripper_left_finger_joint").find("dynamics").set("damping", "0.2")
+
+    new = edited(old, change)
+    code, report = run_json(str(write(tmp_path, "a.urdf", old)), str(write(tmp_path, "b.urdf", new)), cwd=tmp_path)
+    assert code == 1
+    only(report, "joints", "poses")
+    got = {name: {k: (v["old"], v["new"]) for k, v in fields.items()} for name, fields in changes(report, "joints").items()}
+    assert got == {"gripper_right_finger_joint": {"mimic.multiplier": (1.0, -1.0), "mimic.offset": (0.0, 0.01)},
+                   "gripper_left_finger_joint": {"dynamics.damping": (0.1, 0.2)}}
+    _check_poses_against_yourdfpy(report, old, new, {"gripper_right_finger_link"})
+    assert report["poses"][0]["translation_mm"] == pytest.approx(10.0)
+    assert report["poses"][0]["new"]["xyz"][1] - report["poses"][0]["old"]["xyz"][1] == pytest.approx(-0.01)
