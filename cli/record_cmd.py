@@ -57,7 +57,9 @@ def run(args: argparse.Namespace) -> int:
                             on_subscribed=lambda t, _ty: ros_log("INFO", _NODE, f"Subscribed to topic '{t}'"))
         ros_log("INFO", _NODE, f"Recording to '{out}'...")
         try:
-            stop.wait()
+            # Flushes in quiet spells too, so a crash never loses more than one interval.
+            while not stop.wait(args.flush_interval / 2):
+                writer.flush_if_due()
         finally:
             recorder.close()
     ros_log("INFO", _NODE, f"Recording stopped: {writer.messages} message(s) in '{out}'")

@@ -4,7 +4,8 @@ Schemas are rosbags' ``generate_msgdef`` text (the concatenated .msg form rosbag
 writes) and channels carry rosbag2's ``offered_qos_profiles`` YAML and the type's RIHS01
 hash, so rosbags' reader (which requires the ros2 profile), mcap's reader and rosbag2
 read the file. The writer finishes its chunk and flushes it to the OS every
-``flush_every_s`` seconds: after a crash, every message up to the last flushed chunk can
+``flush_every_s`` seconds (on a write, or on :meth:`McapWriter.flush_if_due` called by
+the owner's loop in quiet spells): after a crash, every message up to the last flushed chunk can
 be recovered from the file (MCAP records are self-delimiting; only the summary at the
 end is missing).
 """
@@ -61,6 +62,7 @@ class McapWriter:
         self._flush_every_ns = int(flush_every_s * 1e9)
         self._next_flush = time.monotonic_ns() + self._flush_every_ns
         self.messages = 0
+        self._unflushed = False
         self.closed = False
 
     def __enter__(self) -> McapWriter:
@@ -108,16 +110,28 @@ class McapWriter:
             self._writer.add_message(channel, log_time=log_ns, data=data,
                                      publish_time=log_ns if publish_ns is None else publish_ns, sequence=seq)
             self.messages += 1
+            self._unflushed = True
             now = time.monotonic_ns()
             if now >= self._next_flush:
-                self._next_flush = now + self._flush_every_ns
-                self._writer.flush()
+                self._flush_locked(now)
+
+    def _flush_locked(self, now: int) -> None:
+        self._next_flush = now + self._flush_every_ns
+        self._unflushed = False
+        self._writer.flush()
 
     def flush(self) -> None:
         """Finish the chunk in progress and hand everything to the OS."""
         with self._lock:
             if not self.closed:
-                self._writer.flush()
+                self._flush_locked(time.monotonic_ns())
+
+    def flush_if_due(self) -> None:
+        """Flush when messages came in and the interval has passed (for quiet spells between messages)."""
+        with self._lock:
+            now = time.monotonic_ns()
+            if not self.closed and self._unflushed and now >= self._next_flush:
+                self._flush_locked(now)
 
     def close(self) -> None:
         """Write the summary and close the file (idempotent)."""

@@ -241,3 +241,20 @@ def test_existing_output_is_not_overwritten(tmp_path):
                           capture_output=True, text=True, timeout=60)
     assert proc.returncode == 1 and "already exists" in proc.stderr
     assert out.read_bytes() == b"keep"
+
+
+def test_quiet_spells_are_flushed_when_due(tmp_path):
+    # A message followed by silence reaches the file at the next due flush_if_due, not at the next message.
+    data = bytes(TS2.serialize_cdr(TS2.types["std_msgs/msg/String"](data="robot"), "std_msgs/msg/String"))
+    for due, seen in ((False, 0), (True, 1)):
+        path = tmp_path / f"quiet{due}.mcap"
+        w = McapWriter(path, flush_every_s=3600.0)
+        w.add_topic("/robot_description", "std_msgs/msg/String", qos_yaml(1, transient_local=True))
+        w.write("/robot_description", 1, data)
+        assert readable(path) == []
+        if due:
+            w._next_flush = 0  # as if the interval had passed since the last flush
+        w.flush_if_due()
+        assert len(readable(path)) == seen
+        w.close()
+        assert len(readable(path)) == 1
