@@ -35,6 +35,11 @@ class JointStateTF:
     def __len__(self) -> int:
         return len(self._states)
 
+    def span(self) -> tuple[int, int]:
+        """First and last stamp of the kept states (0, 0 when none)."""
+        stamps = [s for s, _, _ in self._states]
+        return (min(stamps), max(stamps)) if stamps else (0, 0)
+
     def add(self, msg: Any) -> None:
         """Keep one rosbags JointState message (header stamp, names, positions)."""
         names, positions = tuple(msg.name), tuple(float(v) for v in msg.position)

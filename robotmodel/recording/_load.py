@@ -262,8 +262,7 @@ def load_recording(
                                      "record /robot_description")
             got, bad = joints.insert_into(buf, source, rec.path.name, str(rec.path))
             accepted, skipped = accepted + got, skipped + bad
-            stamps = [s for s, _, _ in joints._states]
-            start, end = min(stamps), max(stamps)
+            start, end = joints.span()
         if skipped:
             _log.warning("%s: skipped %d transform(s) tf2 would reject (non-finite values, zero quaternions or bad "
                          "frame ids)", rec.path, skipped)
