@@ -127,7 +127,10 @@ class Browser:
             remaining = deadline - time.monotonic()
             if remaining <= 0:
                 raise ViewerError(f"Chromium did not answer {method} within {self.timeout:g} s")
-            raw = await asyncio.wait_for(self._ws.read_message(), remaining)
+            try:
+                raw = await asyncio.wait_for(self._ws.read_message(), remaining)
+            except TimeoutError:
+                raise ViewerError(f"Chromium did not answer {method} within {self.timeout:g} s") from None
             if raw is None:
                 raise ViewerError("Chromium closed the DevTools connection")
             reply = json.loads(raw)

@@ -209,3 +209,45 @@ def test_screenshot_command_writes_a_png_of_the_robot(tmp_path: Path) -> None:
     middle = rgb[120:360, 160:480]
     assert 0.05 < is_robot_grey(middle).mean() < 0.9
     assert list(tmp_path.iterdir()) == [out]
+
+
+_MOVING_ODOM = """
+import math, signal, threading, time
+from robotmodel.bus import Node
+from robotmodel.tf import make_transform
+from robotmodel.tf_ros import TransformBroadcaster
+stop = threading.Event()
+signal.signal(signal.SIGTERM, lambda *a: stop.set())
+with Node("odometry") as node:
+    broadcaster = TransformBroadcaster(node)
+    print("broadcasting", flush=True)
+    while not stop.wait(0.02):
+        x = 0.2 * math.sin(time.monotonic())
+        broadcaster.sendTransform(make_transform("odom", "base_footprint", (x, 0, 0), (0, 0, 0, 1),
+                                                 stamp_ns=time.time_ns()))
+"""
+
+
+def test_a_streaming_tf_is_drawn_once_per_animation_frame(bus: Bus) -> None:
+    """/tf at 50 Hz must not make the page draw on every batch (it once starved the page: a
+    headless screenshot took ~1 min): at most one draw per animation frame."""
+    diffbot = str(DIFFBOT)
+    bus.robotmodel("robot-state-publisher", diffbot)
+    bus.start(sys.executable, "-c", _MOVING_ODOM).wait_line("^broadcasting$", timeout=60)
+    view = bus.robotmodel("view", diffbot, "--tf", "--fixed-frame", "odom", "--port", "0")
+    url = view.wait_line(r"^http://127\.0\.0\.1:\d+/$", timeout=120).group(0)
+    try:
+        with Browser(timeout=60) as browser:
+            browser.navigate(url)
+            browser.wait_for(READY, timeout=60)
+            browser.wait_for("window.robotmodel.synced > 20", timeout=30)  # the stream is flowing
+            frames, renders, batches = browser.evaluate("""new Promise(done => {
+                const r0 = window.robotmodel.renders, s0 = window.robotmodel.synced; let frames = 0;
+                const tick = () => { frames += 1; if (frames < 60) requestAnimationFrame(tick);
+                    else done([frames, window.robotmodel.renders - r0, window.robotmodel.synced - s0]); };
+                requestAnimationFrame(tick); })""")
+    finally:
+        code = view.stop(signal.SIGINT)
+    assert code == 0
+    assert batches > 0, "no /tf batches arrived while counting"
+    assert renders <= frames + 1, (frames, renders, batches)

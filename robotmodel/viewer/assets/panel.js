@@ -114,20 +114,37 @@
     status(config.joints.length + " movable joints" + (config.publish ? " · publishing /joint_states" : "") + live);
   }
 
-  function onSynced(message) {
-    if (!state.timing.synced) state.timing.synced = performance.now();
+  // Draw at most once per animation frame: batches that arrive faster (a streaming /tf,
+  // a 60 Hz drag) are drawn together, and the page stays responsive.
+  let drawPending = false;
+  let drawnToken = null;
+
+  function draw() {
+    drawPending = false;
     viewer.render();
-    if (!state.timing.drawn) state.timing.drawn = performance.now();
     state.renders += 1;
-    state.synced = message.seq;
-    if (message.token != null) {
+    if (!state.timing.drawn) state.timing.drawn = performance.now();
+    if (drawnToken != null) {
       const now = performance.now();
       for (const [t, at] of sentAt) {
-        if (t <= message.token) {
+        if (t <= drawnToken) {
           state.latencies.push(now - at);
           sentAt.delete(t);
         }
       }
+      drawnToken = null;
+    }
+  }
+
+  function onSynced(message) {
+    if (!state.timing.synced) state.timing.synced = performance.now();
+    state.synced = message.seq;
+    if (message.token != null) drawnToken = Math.max(drawnToken || 0, message.token);
+    if (state.renders === 0) {
+      draw();  // the first scene is drawn at once
+    } else if (!drawPending) {
+      drawPending = true;
+      requestAnimationFrame(draw);
     }
   }
 
