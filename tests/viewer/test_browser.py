@@ -228,9 +228,10 @@ with Node("odometry") as node:
 """
 
 
-def test_a_streaming_tf_is_drawn_once_per_animation_frame(bus: Bus) -> None:
+def test_a_streaming_tf_leaves_the_page_time_to_breathe(bus: Bus) -> None:
     """/tf at 50 Hz must not make the page draw on every batch (it once starved the page: a
-    headless screenshot took ~1 min): at most one draw per animation frame."""
+    headless screenshot took ~1 min). Draws are throttled: at most 30 a second and never
+    closer than a draw's own cost, so drawing takes at most about half the page's time."""
     diffbot = str(DIFFBOT)
     bus.robotmodel("robot-state-publisher", diffbot)
     bus.start(sys.executable, "-c", _MOVING_ODOM).wait_line("^broadcasting$", timeout=60)
@@ -241,13 +242,15 @@ def test_a_streaming_tf_is_drawn_once_per_animation_frame(bus: Bus) -> None:
             browser.navigate(url)
             browser.wait_for(READY, timeout=60)
             browser.wait_for("window.robotmodel.synced > 20", timeout=30)  # the stream is flowing
-            frames, renders, batches = browser.evaluate("""new Promise(done => {
-                const r0 = window.robotmodel.renders, s0 = window.robotmodel.synced; let frames = 0;
-                const tick = () => { frames += 1; if (frames < 60) requestAnimationFrame(tick);
-                    else done([frames, window.robotmodel.renders - r0, window.robotmodel.synced - s0]); };
-                requestAnimationFrame(tick); })""")
+            elapsed, renders, batches, drawing = browser.evaluate("""new Promise(done => {
+                const m = window.robotmodel, t0 = performance.now(), r0 = m.renders, s0 = m.synced,
+                      d0 = m.renderMs;
+                setTimeout(() => done([performance.now() - t0, m.renders - r0, m.synced - s0, m.renderMs - d0]),
+                           2000); })""")
+            browser.screenshot()  # answers while the stream goes on
     finally:
         code = view.stop(signal.SIGINT)
     assert code == 0
     assert batches > 0, "no /tf batches arrived while counting"
-    assert renders <= frames + 1, (frames, renders, batches)
+    assert renders <= elapsed / (1000 / 30) + 2, (elapsed, renders, batches)
+    assert drawing <= 0.5 * elapsed + 100, (elapsed, drawing, renders)  # one draw's worth of slack

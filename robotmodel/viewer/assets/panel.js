@@ -114,21 +114,31 @@
     status(config.joints.length + " movable joints" + (config.publish ? " · publishing /joint_states" : "") + live);
   }
 
-  // Draw at most once per animation frame: batches that arrive faster (a streaming /tf,
-  // a 60 Hz drag) are drawn together, and the page stays responsive.
-  let drawPending = false;
+  // Draws are throttled: at most 30 a second, and never closer than one draw's own cost,
+  // so batches arriving faster (a streaming /tf, a 60 Hz drag) are drawn together and the
+  // page keeps at least half its time for everything else. The first batch after a pause
+  // is drawn at once (leading edge), which keeps a slider's latency low.
+  const MIN_PERIOD = 1000 / 30;
+  let drawTimer = null;
+  let lastDrawEnd = -Infinity;
+  let lastDrawCost = 0;
   let drawnToken = null;
+  state.renderMs = 0;
 
   function draw() {
-    drawPending = false;
+    drawTimer = null;
+    const start = performance.now();
     viewer.render();
+    const end = performance.now();
+    lastDrawCost = end - start;
+    lastDrawEnd = end;
+    state.renderMs += lastDrawCost;
     state.renders += 1;
-    if (!state.timing.drawn) state.timing.drawn = performance.now();
+    if (!state.timing.drawn) state.timing.drawn = end;
     if (drawnToken != null) {
-      const now = performance.now();
       for (const [t, at] of sentAt) {
         if (t <= drawnToken) {
-          state.latencies.push(now - at);
+          state.latencies.push(end - at);
           sentAt.delete(t);
         }
       }
@@ -140,12 +150,10 @@
     if (!state.timing.synced) state.timing.synced = performance.now();
     state.synced = message.seq;
     if (message.token != null) drawnToken = Math.max(drawnToken || 0, message.token);
-    if (state.renders === 0) {
-      draw();  // the first scene is drawn at once
-    } else if (!drawPending) {
-      drawPending = true;
-      requestAnimationFrame(draw);
-    }
+    if (drawTimer !== null) return;
+    const wait = lastDrawEnd + Math.max(MIN_PERIOD, lastDrawCost) - performance.now();
+    if (wait <= 0) draw();
+    else drawTimer = setTimeout(draw, wait);
   }
 
   function onText(message) {
