@@ -8,6 +8,7 @@ file is converted again, an unchanged one is read back in about a millisecond.
 from __future__ import annotations
 
 import hashlib
+import logging
 import os
 import re
 import tempfile
@@ -105,7 +106,15 @@ def _part_colour(mesh: Any) -> tuple[npt.NDArray[np.float32], bool]:
 def _convert(path: Path) -> MeshData:
     import trimesh
 
-    scene: Any = trimesh.load(str(path), force="scene")
+    # trimesh logs a traceback for each texture it cannot find (e.g. a DAE's missing bump
+    # map) although the geometry loads; the viewer only wants to hear about failed meshes.
+    trimesh_log = logging.getLogger("trimesh")
+    level = trimesh_log.level
+    trimesh_log.setLevel(logging.CRITICAL)
+    try:
+        scene: Any = trimesh.load(str(path), force="scene")
+    finally:
+        trimesh_log.setLevel(level)
     vertices: list[npt.NDArray[np.float32]] = []
     faces: list[npt.NDArray[np.uint32]] = []
     colors: list[npt.NDArray[np.float32]] = []
