@@ -11,12 +11,14 @@ of the 24 sequences (``'sxyz'``, the default, is static x then y then z: URDF's 
 pitch, yaw; ``'r...'`` are rotating-axis sequences) or its tuple encoding; matrices are
 4x4 homogeneous and act on column vectors; ``quaternion_multiply(q1, q0)`` rotates by
 ``q0`` first. Implemented on :mod:`robotmodel.spatial`. Projection, clipping, shearing,
-superimposition, matrix decomposition and the Arcball class are not provided.
+superimposition and the Arcball class are not provided; ``decompose_matrix`` takes
+affine matrices only.
 """
 
 from __future__ import annotations
 
 from robotmodel.tf_transformations._axes import AXES
+from robotmodel.tf_transformations._compose import compose_matrix, decompose_matrix
 from robotmodel.tf_transformations._euler import (
     euler_from_matrix,
     euler_from_quaternion,
@@ -51,7 +53,9 @@ from robotmodel.tf_transformations._quaternion import (
 
 __all__ = [
     "AXES",
+    "compose_matrix",
     "concatenate_matrices",
+    "decompose_matrix",
     "euler_from_matrix",
     "euler_from_quaternion",
     "euler_matrix",

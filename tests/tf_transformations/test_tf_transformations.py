@@ -176,7 +176,7 @@ def test_bad_axes() -> None:
 def test_public_surface() -> None:
     # The names ported code imports; each documented.
     assert set(tft.__all__) == {
-        "AXES", "concatenate_matrices", "euler_from_matrix", "euler_from_quaternion", "euler_matrix",
+        "AXES", "compose_matrix", "concatenate_matrices", "decompose_matrix", "euler_from_matrix", "euler_from_quaternion", "euler_matrix",
         "identity_matrix", "inverse_matrix", "is_same_transform", "quaternion_about_axis", "quaternion_conjugate",
         "quaternion_from_euler", "quaternion_from_matrix", "quaternion_inverse", "quaternion_matrix",
         "quaternion_multiply", "quaternion_slerp", "random_quaternion", "random_rotation_matrix", "random_vector",
@@ -185,3 +185,25 @@ def test_public_surface() -> None:
     for name in tft.__all__:
         if name != "AXES":
             assert getattr(tft, name).__doc__, name
+
+
+def test_compose_and_decompose() -> None:
+    scale, shear, angles, translate = [1.5, 0.7, 2.0], [0.2, -0.1, 0.3], [0.3, -0.6, 2.1], [1.0, -2.0, 0.5]
+    m = tft.compose_matrix(scale, shear, angles, translate)
+    # T · R · Z · S written out: Z shears x by y (0.2) and by z (-0.1), y by z (0.3).
+    z = np.array([[1, 0.2, -0.1], [0, 1, 0.3], [0, 0, 1]])
+    r = pr.matrix_from_euler(angles, 0, 1, 2, extrinsic=True)
+    np.testing.assert_allclose(m[:3, :3], r @ z @ np.diag(scale), atol=1e-12)
+    np.testing.assert_allclose(m[:3, 3], translate)
+    got = tft.decompose_matrix(m)
+    np.testing.assert_allclose(got[0], scale, atol=1e-12)
+    np.testing.assert_allclose(got[1], shear, atol=1e-12)
+    np.testing.assert_allclose(got[2], angles, atol=1e-12)
+    np.testing.assert_allclose(got[3], translate, atol=1e-12)
+    np.testing.assert_allclose(got[4], [0, 0, 0, 1])
+    mirror = tft.compose_matrix([-1.0, -2.0, -3.0], None, angles)
+    s, _, a, _, _ = tft.decompose_matrix(mirror)
+    np.testing.assert_allclose(s, [-1, -2, -3], atol=1e-12)
+    np.testing.assert_allclose(tft.compose_matrix(s, None, a), mirror, atol=1e-12)
+    with pytest.raises(ValueError, match="perspective"):
+        tft.decompose_matrix(tft.compose_matrix(perspective=[0.1, 0, 0, 1]))
