@@ -44,11 +44,23 @@ class CommandParser(argparse.ArgumentParser):
     """
 
     takes_mappings = False
+    #: Set by :func:`robotmodel.cli._ros_args.add_node_arguments`: ``--ros-args`` blocks are read first.
+    takes_ros_args = False
+    ros_node_name: str | None = None
 
     def parse_known_args(  # type: ignore[override]
         self, args: Sequence[str] | None = None, namespace: argparse.Namespace | None = None
     ) -> tuple[argparse.Namespace, list[str]]:
         words = list(sys.argv[1:] if args is None else args)
+        ros = None
+        if self.takes_ros_args:
+            # Before the mappings: '__ns:=/r1' is a ROS remap rule, not a xacro argument.
+            from robotmodel.cli._ros_args import RosArgsError, take_ros_args
+
+            try:
+                ros, words = take_ros_args(words, self.ros_node_name)
+            except RosArgsError as exc:
+                self.exit(2, f"{self.prog}: error: {exc}\n")
         mappings: dict[str, str] = {}
         if self.takes_mappings:
             try:
@@ -60,6 +72,13 @@ class CommandParser(argparse.ArgumentParser):
             self.error(f"unrecognized arguments: {' '.join(extras)}")
         if self.takes_mappings:
             parsed.mappings = mappings
+        if ros is not None:
+            from robotmodel.cli._ros_args import RosArgsError, settle
+
+            try:
+                settle(parsed, ros)
+            except RosArgsError as exc:  # one line, as the library's errors
+                self.exit(2, f"{self.prog}: error: {exc}\n")
         return parsed, []
 
     def format_usage(self) -> str:

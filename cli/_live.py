@@ -141,7 +141,9 @@ def serve_live(args: argparse.Namespace, desc: Any, initial: dict[str, float], f
         if desc is None or publish or follow or tf:
             from robotmodel.bus import Node
 
-            node = Node("robotmodel_view", connect=args.connect)
+            # Relative robot_description and joint_states: under --namespace, as rviz's displays resolve them.
+            node = Node(getattr(args, "node_name", None) or "robotmodel_view", getattr(args, "namespace", "/"),
+                        connect=args.connect)
             closers.append(node)
         topic = None
         if desc is None:

@@ -6,6 +6,9 @@ import argparse
 from typing import Any
 
 from robotmodel.cli._common import add_mapping_arguments
+from robotmodel.cli._ros_args import add_node_arguments
+
+_NODE = "joint_state_publisher"
 
 
 def _zero(word: str) -> tuple[str, float]:
@@ -53,6 +56,7 @@ def register(sub: Any) -> None:
                         help="refuse $(env), $(optenv) and reads outside the input's package roots")
     parser.add_argument("--connect", action="append", default=[], metavar="ENDPOINT",
                         help="zenoh endpoint to connect to (e.g. tcp/192.168.1.10:7447); repeatable")
+    add_node_arguments(parser, _NODE)
     parser.set_defaults(func=run)
 
 
@@ -61,13 +65,17 @@ def run(args: argparse.Namespace) -> int:
     from robotmodel.cli._bus_args import stop_on_signals
     from robotmodel.cli._common import load_description
     from robotmodel.cli._publisher_log import ros_console
+    from robotmodel.cli._ros_args import logger_name
 
+    from robotmodel.bus import Node
     from robotmodel.publishers import JointStatePublisher
 
     desc = load_description(args)[0] if args.file is not None else None
-    log = ros_console("joint_state_publisher")
+    name = args.node_name or _NODE
+    log = ros_console(logger_name(args.namespace, name))
     stop = stop_on_signals()
-    with JointStatePublisher(desc, rate=args.rate, zeros=dict(args.zeros), source_list=args.source_list,
-                             logger=log, connect=args.connect):
+    # joint_states, robot_description and relative --source-list topics resolve under the namespace.
+    with Node(name, args.namespace, connect=args.connect) as node, JointStatePublisher(
+            desc, bus=node, rate=args.rate, zeros=dict(args.zeros), source_list=args.source_list, logger=log):
         stop.wait()
     return 0

@@ -6,6 +6,9 @@ import argparse
 from typing import Any
 
 from robotmodel.cli._common import add_model_arguments
+from robotmodel.cli._ros_args import add_node_arguments
+
+_NODE = "robot_state_publisher"
 
 
 def register(sub: Any) -> None:
@@ -26,6 +29,7 @@ def register(sub: Any) -> None:
                         help="publish every joint state, whatever its stamp")
     parser.add_argument("--connect", action="append", default=[], metavar="ENDPOINT",
                         help="zenoh endpoint to connect to (e.g. tcp/192.168.1.10:7447); repeatable")
+    add_node_arguments(parser, _NODE)
     parser.set_defaults(func=run)
 
 
@@ -34,14 +38,19 @@ def run(args: argparse.Namespace) -> int:
     from robotmodel.cli._bus_args import stop_on_signals
     from robotmodel.cli._common import load_description
     from robotmodel.cli._publisher_log import ros_console
+    from robotmodel.cli._ros_args import logger_name
 
+    from robotmodel.bus import Node
     from robotmodel.publishers import RobotStatePublisher, check_publish_frequency
 
     check_publish_frequency(args.publish_frequency)
     desc, _ = load_description(args)
-    log = ros_console("robot_state_publisher")
+    name = args.node_name or _NODE
+    log = ros_console(logger_name(args.namespace, name))
     stop = stop_on_signals()
-    with RobotStatePublisher(desc, publish_frequency=args.publish_frequency, frame_prefix=args.frame_prefix,
-                             ignore_timestamp=args.ignore_timestamp, logger=log, connect=args.connect):
+    # RSP's topics are relative (joint_states, robot_description): they follow the namespace; /tf does not.
+    with Node(name, args.namespace, connect=args.connect) as node, RobotStatePublisher(
+            desc, bus=node, publish_frequency=args.publish_frequency, frame_prefix=args.frame_prefix,
+            ignore_timestamp=args.ignore_timestamp, logger=log):
         stop.wait()
     return 0

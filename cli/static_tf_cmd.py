@@ -8,10 +8,12 @@ The argument forms and texts are in :mod:`robotmodel.cli._static_args`.
 from __future__ import annotations
 
 import argparse
+import sys
 import time
 from typing import Any
 
-from robotmodel.cli._bus_args import split_connect, stop_on_signals, strip_ros_args
+from robotmodel.cli._bus_args import split_connect, stop_on_signals
+from robotmodel.cli._ros_args import RosArgsError, split_node_words
 from robotmodel.cli._rosfmt import ros_log
 from robotmodel.cli._static_args import (
     USAGE,
@@ -32,7 +34,8 @@ def register(sub: Any) -> None:
         prefix_chars="+", add_help=False,
         help="publish a static transform on /tf_static (tf2_ros's flags and positional forms)",
         description="--x X --y Y --z Z [--qx --qy --qz --qw | --roll --pitch --yaw] --frame-id F "
-        "--child-frame-id C [--connect ENDPOINT]; or x y z yaw pitch roll F C [period_ms]; or "
+        "--child-frame-id C [--connect ENDPOINT] [--namespace NS] [--ros-args -r __ns:=/NS]; "
+        "or x y z yaw pitch roll F C [period_ms]; or "
         "x y z qx qy qz qw F C [period_ms]",
     )
     parser.add_argument("words", nargs="*")
@@ -47,7 +50,12 @@ def _transform(spec: StaticTransformSpec, stamp_ns: int) -> Any:
 
 def run(args: argparse.Namespace) -> int:
     """Parse, validate, publish, then wait for a stop signal."""
-    words, endpoints = split_connect(strip_ros_args(args.words))
+    try:
+        words, namespace, node_name = split_node_words(args.words)
+    except RosArgsError as exc:
+        print(f"robotmodel static-transform-publisher: error: {exc}", file=sys.stderr)
+        return 2
+    words, endpoints = split_connect(words)
     try:
         spec = parse_static_args(words, lambda text: ros_log("WARN", "", text))
     except StaticArgsError as exc:
@@ -60,7 +68,7 @@ def run(args: argparse.Namespace) -> int:
 
     from robotmodel.tf_ros._node import unique_name
 
-    name = unique_name("static_transform_publisher_")
+    name = node_name or unique_name("static_transform_publisher_")
     errors = validation_errors(spec, name)
     if errors:
         for line in errors:
@@ -71,7 +79,8 @@ def run(args: argparse.Namespace) -> int:
     from robotmodel.bus import Node
     from robotmodel.tf_ros import StaticTransformBroadcaster, TransformBroadcaster
 
-    with Node(name, connect=endpoints) as node:
+    # /tf and /tf_static are absolute: the namespace names the node only, as in ROS.
+    with Node(name, namespace, connect=endpoints) as node:
         if spec.period_ms is None:
             with StaticTransformBroadcaster(node) as static:
                 static.send_transform(_transform(spec, time.time_ns()))

@@ -16,7 +16,7 @@ import time
 from typing import Any
 
 from robotmodel.cli._bag_args import BagWordsError, split_bag_words
-from robotmodel.cli._bus_args import split_connect, stop_on_signals, strip_ros_args
+from robotmodel.cli._bus_args import split_connect, stop_on_signals
 from robotmodel.cli._echo_fmt import (
     USAGE,
     EchoArgsError,
@@ -25,6 +25,7 @@ from robotmodel.cli._echo_fmt import (
     parse_echo_args,
     waiting_message,
 )
+from robotmodel.cli._ros_args import RosArgsError, split_node_words
 from robotmodel.cli._rosfmt import ros_log
 
 __all__ = ["can_transform_reason", "register", "run"]
@@ -37,7 +38,7 @@ def register(sub: Any) -> None:
     parser: argparse.ArgumentParser = sub.add_parser(
         "tf2-echo", aliases=["tf2_echo"], prefix_chars="\x01", add_help=False,
         help="print a transform from the bus (or a recording: --bag FILE) in tf2_echo's format",
-        description="tf2-echo SOURCE TARGET [RATE] [--connect ENDPOINT] | "
+        description="tf2-echo SOURCE TARGET [RATE] [--connect ENDPOINT] [--namespace NS] | "
                     "tf2-echo --bag FILE SOURCE TARGET [--time T | --every DT] [--urdf FILE]",
     )
     parser.add_argument("words", nargs="*")
@@ -65,7 +66,12 @@ def can_transform_reason(buffer: Any, target: str, source: str) -> str:
 
 def run(args: argparse.Namespace) -> int:
     """Listen, wait for the frames, then print the transform at the given rate."""
-    words, endpoints = split_connect(strip_ros_args(args.words))
+    try:
+        words, namespace, node_name = split_node_words(args.words, _NODE)
+    except RosArgsError as exc:
+        print(f"robotmodel tf2-echo: error: {exc}", file=sys.stderr)
+        return 2
+    words, endpoints = split_connect(words)
     if words and words[0] in ("-h", "--help"):
         print(USAGE, end="", flush=True)
         return 0
@@ -97,7 +103,8 @@ def run(args: argparse.Namespace) -> int:
     period = 1.0 / echo.rate_hz
     source, target = echo.source_frame, echo.target_frame
     buffer = Buffer()
-    with Node(_NODE, connect=endpoints) as node, TransformListener(buffer, node):
+    # /tf and /tf_static are absolute: the namespace names the node only, as in ROS.
+    with Node(node_name or _NODE, namespace, connect=endpoints) as node, TransformListener(buffer, node):
         last_log = -1.0
         while not stop.is_set():
             reason = can_transform_reason(buffer, source, target)

@@ -11,6 +11,7 @@ from pathlib import Path
 from typing import Any
 
 from robotmodel.cli._common import add_mapping_arguments
+from robotmodel.cli._ros_args import add_node_arguments
 
 from robotmodel.errors import RobotModelError
 
@@ -42,6 +43,7 @@ def add_viewer_arguments(parser: argparse.ArgumentParser, *, live_flags: bool = 
         parser.add_argument("--fixed-frame", metavar="FRAME",
                             help="the frame --tf draws from, as rviz's Fixed Frame (default: the robot's root)")
         parser.add_argument("--publish", action="store_true", help="publish the sliders' values on /joint_states")
+    add_node_arguments(parser, "robotmodel_view")
 
 
 def register(sub: Any) -> None:

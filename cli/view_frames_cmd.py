@@ -20,6 +20,7 @@ from typing import Any
 from robotmodel.cli._bag_args import add_bag_arguments
 from robotmodel.cli._bus_args import stop_on_signals
 from robotmodel.cli._common import write_atomic
+from robotmodel.cli._ros_args import add_node_arguments
 from robotmodel.cli._rosfmt import ros_log
 
 __all__ = ["default_output_name", "register", "result_message", "run"]
@@ -40,6 +41,7 @@ def register(sub: Any) -> None:
     parser.add_argument("--connect", action="append", default=[], metavar="ENDPOINT",
                         help="zenoh endpoint to connect to (repeatable)")
     add_bag_arguments(parser)
+    add_node_arguments(parser, _NODE)
     parser.set_defaults(func=run)
 
 
@@ -72,7 +74,9 @@ def run(args: argparse.Namespace) -> int:
         from robotmodel.tf_ros import TransformListener
 
         buffer = Buffer()
-        with Node(_NODE, connect=args.connect) as node, TransformListener(buffer, node):
+        # /tf and /tf_static are absolute: the namespace names the node only, as in ROS.
+        with Node(args.node_name or _NODE, args.namespace, connect=args.connect) as node, \
+                TransformListener(buffer, node):
             ros_log("INFO", _NODE, f"Listening to tf data for {args.wait_time} seconds...")
             stop.wait(args.wait_time)
         now_ns = time.time_ns()

@@ -10,7 +10,9 @@
 
 Any other node is skipped with one line. ``robot_description`` is the node's own
 parameter, else (ROS 1) the nearest one up its namespace, as ``searchParam`` finds it; a
-xacro command becomes ``FILE name:=value ...`` so the command expands it itself.
+xacro command becomes ``FILE name:=value ...`` so the command expands it itself. A node
+outside the root namespace gets it as launch_ros passes it: ``--ros-args -r __ns:=/ns`` at
+the end of its command line.
 """
 
 from __future__ import annotations
@@ -49,10 +51,7 @@ def build_plan(launch: LaunchFile, workdir: Path, *, package_paths: Sequence[Pat
             if isinstance(spec, str):
                 plan.skipped.append(f"{label}: {spec}")
                 continue
-            plan.processes.append(spec)
-            if node.namespace != "/" and key not in _RVIZ:
-                plan.notes.append(f"{node.full_name}: namespace {node.namespace} not applied to topics "
-                                  "(robotmodel's commands use the global /tf, /joint_states and /robot_description)")
+            plan.processes.append(_in_namespace(spec, node))
         else:
             plan.skipped.append(f"{label}: no robotmodel equivalent, not started")
     return plan
@@ -137,6 +136,24 @@ class _Mapper:
         # Leading blanks go: urdfdom's XML parser skips them, an XML declaration may not follow them here.
         path.write_text((param.value or "").lstrip(), encoding="utf-8")
         return (str(path),)
+
+
+def _in_namespace(spec: ProcessSpec, node: NodeDecl) -> ProcessSpec:
+    """The command with the node's namespace, passed as launch_ros passes it: ``--ros-args -r __ns:=/ns``.
+
+    Each command then resolves its relative topics (joint_states, robot_description) under
+    it, while /tf and /tf_static stay global, as with ROS's nodes.
+    """
+    if node.namespace == "/":
+        return spec
+    from robotmodel.bus._names import validate_namespace
+    from robotmodel.errors import BusError
+
+    try:
+        validate_namespace(node.namespace)
+    except BusError as exc:
+        raise LaunchError(f"{node.file}:{node.line}: node {node.name}: {exc}") from None
+    return replace(spec, argv=(*spec.argv, "--ros-args", "-r", f"__ns:={node.namespace}"))
 
 
 def _split(node: NodeDecl) -> list[str]:

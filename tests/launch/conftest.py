@@ -145,12 +145,12 @@ def write_ros2(pkg: Package) -> Path:
               <param name="publish_frequency" value="$(var freq)"/>
               <param name="frame_prefix" value="x/"/>
             </node>
+            <node pkg="joint_state_publisher" exec="joint_state_publisher" unless="$(var gui)">
+              <param name="zeros"><param name="a_shoulder" value="0.5"/></param>
+              <param name="source_list" value="[/extra_states]"/>
+            </node>
+            <node pkg="joint_state_publisher_gui" exec="joint_state_publisher_gui" if="$(var gui)"/>
           </group>
-          <node pkg="joint_state_publisher" exec="joint_state_publisher" unless="$(var gui)">
-            <param name="zeros"><param name="a_shoulder" value="0.5"/></param>
-            <param name="source_list" value="[/extra_states]"/>
-          </node>
-          <node pkg="joint_state_publisher_gui" exec="joint_state_publisher_gui" if="$(var gui)"/>
           <include file="$(dirname)/statics.launch.xml">
             <arg name="child" value="odom"/>
           </include>

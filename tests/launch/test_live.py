@@ -105,7 +105,7 @@ def test_ros1_launch_tree_publishes_tf_and_sigterm_stops_every_process(live, pkg
 def test_ros2_launch_tree_with_tf2_echo(live, pkg, ros2_top):
     proc = launch(live, str(ros2_top), "--package-path", str(pkg.root))
     pids = started(proc, 4)
-    assert sorted(pids) == ["joint_state_publisher-2", "map_odom-3", "robot1/robot_state_publisher-1", "rviz2-4"]
+    assert sorted(pids) == ["map_odom-3", "robot1/joint_state_publisher-2", "robot1/robot_state_publisher-1", "rviz2-4"]
     echo = live.robotmodel("tf2-echo", "map", "odom")
     echo.wait_line(r"^- Translation: \[1\.000, 2\.000, 0\.000\]$", timeout=40)
     buffer = Buffer()
