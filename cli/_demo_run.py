@@ -139,8 +139,9 @@ class Demo:
         self._ready(sim, r"integrating", "sensor_simulator")
         c.example("robot_controller", *scale)
         c.robotmodel("tf2_echo", "map", "base_footprint", "1", on_line=self.echo)
-        # The viewer follows /joint_states (the wheels turn). Not --tf: with /tf streaming, headless
-        # Chromium's screenshot of the page does not complete in time on a small machine.
+        # The viewer follows /joint_states (the wheels turn). Not --tf: the robot's own frames'
+        # labels crowd the picture and a headless screenshot takes tens of seconds on a small
+        # machine; with --fixed-frame odom the robot soon drives out of the camera's view.
         view = c.robotmodel("view", robot, "--follow", "--frames", "none")
         found = self._ready(view, r"^(http://127\.0\.0\.1:\d+/\S*)", "view")
         self.url = found.group(1)
