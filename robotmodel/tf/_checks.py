@@ -138,28 +138,34 @@ def time_arg_ns(value: Any, where: str) -> int:
 def checked_stamps(values: Any, where: str) -> npt.NDArray[np.int64]:
     """A 1-D int64 array of stamps in [0, 2**63); anything else is InvalidArgumentException."""
     arr = np.asarray(values).reshape(-1)
-    kind = arr.dtype.kind
-    bad = _stamp_error(values, where, "stamps are integer nanoseconds in [0, 2^63)")
-    if kind == "i":
-        out = arr.astype(np.int64, copy=False)
-    elif kind == "u":
-        if arr.size and int(arr.max()) >= STAMP_LIMIT:
-            raise bad
-        out = arr.astype(np.int64)
-    elif kind == "f":
-        if not bool((np.isfinite(arr) & (arr == np.floor(arr)) & (arr < 2.0**63)).all()):
-            raise bad
-        out = arr.astype(np.int64)
-    elif kind == "O":
-        try:
-            ints = [operator.index(v) for v in arr.tolist()]
-        except TypeError:
-            raise bad from None
-        if any(not -STAMP_LIMIT <= v < STAMP_LIMIT for v in ints):
-            raise bad
-        out = np.array(ints, dtype=np.int64)
-    else:
-        raise bad
+    out = _stamp_array(arr)
+    if out is None:
+        # Built only on failure: the message renders the values, which costs milliseconds.
+        raise _stamp_error(values, where, "stamps are integer nanoseconds in [0, 2^63)")
     if out.size and int(out.min()) < 0:
         raise _stamp_error(values, where, "a tf2 time cannot be negative")
     return out
+
+
+def _stamp_array(arr: npt.NDArray[Any]) -> npt.NDArray[np.int64] | None:
+    """``arr`` as int64 nanoseconds, or None when some value is no integer below 2**63."""
+    kind = arr.dtype.kind
+    if kind == "i":
+        return arr.astype(np.int64, copy=False)
+    if kind == "u":
+        if arr.size and int(arr.max()) >= STAMP_LIMIT:
+            return None
+        return arr.astype(np.int64)
+    if kind == "f":
+        if not bool((np.isfinite(arr) & (arr == np.floor(arr)) & (arr < 2.0**63)).all()):
+            return None
+        return arr.astype(np.int64)
+    if kind == "O":
+        try:
+            ints = [operator.index(v) for v in arr.tolist()]
+        except TypeError:
+            return None
+        if any(not -STAMP_LIMIT <= v < STAMP_LIMIT for v in ints):
+            return None
+        return np.array(ints, dtype=np.int64)
+    return None
