@@ -1,9 +1,13 @@
 """robot_state_publisher and joint_state_publisher as library objects.
 
-- :class:`RobotStatePublisher`: on a bus node, publishes /robot_description and /tf_static
-  (latched) and /tf for each JointState, as ROS 2's robot_state_publisher.
-- :class:`JointStatePublisher`: publishes JointState at a rate for a robot from a file or
-  from /robot_description; :meth:`JointStatePublisher.set` moves joints.
+- :class:`RobotStatePublisher`: on a bus node, publishes robot_description and /tf_static
+  (latched) and /tf for each JointState on joint_states, as ROS 2's robot_state_publisher.
+- :class:`JointStatePublisher`: publishes JointState on joint_states at a rate for a robot
+  from a file or from robot_description; :meth:`JointStatePublisher.set` moves joints.
+
+As in ROS, ``joint_states``, ``robot_description`` and ``source_list`` topics are relative:
+they resolve under the node's namespace (a ``Node("rsp", "/r1")`` gives ``/r1/joint_states``),
+while ``/tf`` and ``/tf_static`` are absolute and shared by every namespace.
 - :class:`RobotStateLogic`: robot_state_publisher's rules with no bus: a JointState in,
   the /tf transforms out; the /tf_static set; the rate cap, ``frame_prefix`` and
   ``ignore_timestamp``.
