@@ -1,0 +1,41 @@
+"""stop_on_signals: a signal that lands while the main thread holds the stop event's lock still stops the tool."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+import textwrap
+
+# Run in a child: with a handler that sets the event itself, the call below never returns.
+_PROBE = textwrap.dedent("""
+    import signal
+    from robotmodel.cli._bus_args import stop_on_signals
+
+    stop = stop_on_signals()
+    handler = signal.getsignal(signal.SIGTERM)
+    # Event.wait(timeout) holds the event's lock between waking and returning; a signal handled
+    # in that window runs on the main thread with the lock held. Reproduce that window exactly.
+    with stop._cond:
+        handler(signal.SIGTERM, None)
+    assert stop.wait(10), "the stop event was never set"
+    print("stopped")
+""")
+
+
+def test_handler_runs_while_the_main_thread_holds_the_event_lock():
+    result = subprocess.run([sys.executable, "-c", _PROBE], capture_output=True, text=True, timeout=30, check=False)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.strip() == "stopped"
+
+
+def test_sigterm_stops_a_waiting_main_thread():
+    probe = textwrap.dedent("""
+        import os, signal, sys
+        from robotmodel.cli._bus_args import stop_on_signals
+
+        stop = stop_on_signals()
+        os.kill(os.getpid(), signal.SIGTERM)
+        print("stopped" if stop.wait(10) else "not stopped")
+    """)
+    result = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, timeout=30, check=False)
+    assert result.stdout.strip() == "stopped", result.stderr
