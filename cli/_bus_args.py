@@ -2,12 +2,9 @@
 
 from __future__ import annotations
 
-import contextlib
-import os
-import signal
-import threading
 from collections.abc import Sequence
-from types import FrameType
+
+from robotmodel.signals import stop_on_signals
 
 __all__ = ["split_connect", "stop_on_signals", "strip_ros_args"]
 
@@ -52,28 +49,3 @@ def strip_ros_args(words: Sequence[str]) -> list[str]:
         else:
             rest.append(word)
     return rest
-
-
-def stop_on_signals() -> threading.Event:
-    """An event set by SIGINT or SIGTERM, which no longer raise: a ROS tool stops cleanly and exits 0.
-
-    The handler only writes a byte to a pipe; a watcher thread sets the event. Setting it
-    in the handler itself deadlocks when the signal lands while the main thread is inside
-    ``stop.wait()`` holding the event's lock (the process then ignores every later SIGTERM).
-    """
-    stop = threading.Event()
-    read_fd, write_fd = os.pipe()
-
-    def watch() -> None:
-        os.read(read_fd, 1)
-        stop.set()
-
-    def handler(signum: int, frame: FrameType | None) -> None:
-        del signum, frame
-        with contextlib.suppress(OSError):  # the pipe is only full when a stop is already on its way
-            os.write(write_fd, b"\0")
-
-    threading.Thread(target=watch, name="stop-on-signals", daemon=True).start()
-    signal.signal(signal.SIGINT, handler)
-    signal.signal(signal.SIGTERM, handler)
-    return stop

@@ -10,12 +10,12 @@ import threading
 import time
 from datetime import datetime
 from pathlib import Path
-from types import FrameType
 
 from robotmodel.cli._demo_children import Child, Children, private_bus_env
 from robotmodel.cli.demo_cmd import MAP_TO_ODOM, ROBOT, TOPICS
 
 from robotmodel.errors import RobotModelError
+from robotmodel.signals import stop_on_signals
 
 __all__ = ["Demo"]
 
@@ -90,16 +90,13 @@ class Demo:
         self.notes: list[str] = []
         self.elapsed = 0.0
 
-    def _on_signal(self, signum: int, frame: FrameType | None) -> None:
-        del signum, frame
-        self.stop.set()
-
     def run(self) -> int:
         """Everything, in order; children are reaped whatever happens."""
         import robotmodel.robots
 
         robot = str(robotmodel.robots.path(ROBOT))
-        old = {s: signal.signal(s, self._on_signal) for s in (signal.SIGINT, signal.SIGTERM)}
+        old = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM)}
+        stop_on_signals(self.stop)
         print(f"robotmodel demo: the bundled {ROBOT} driven by the odometry example, on a private bus "
               f"(port {self.env['ROBOTMODEL_ZENOH_PORT']}, ROS_DOMAIN_ID {self.env['ROS_DOMAIN_ID']})", flush=True)
         print(f"files go to {self.out.resolve()}/", flush=True)

@@ -8,10 +8,9 @@ Run: python examples/arm_gripper_listener.py [--duration S]
 from __future__ import annotations
 
 import argparse
-import signal
-import threading
 
 from robotmodel.bus import Node
+from robotmodel.signals import stop_on_signals
 from robotmodel.tf import Buffer, ConnectivityException, ExtrapolationException, LookupException, Time
 from robotmodel.tf_ros import TransformListener
 from robotmodel.tf_transformations import euler_from_quaternion
@@ -23,9 +22,7 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--duration", type=float, default=None, help="stop after S seconds (default: run on)")
     args = parser.parse_args()
-    shutdown = threading.Event()
-    for sig in (signal.SIGINT, signal.SIGTERM):
-        signal.signal(sig, lambda *_: shutdown.set())
+    shutdown = stop_on_signals()
     clock = SystemClock()
     end = None if args.duration is None else clock.now() + Duration(seconds=args.duration)
     with Node("arm_gripper_listener") as node:

@@ -15,11 +15,10 @@ from __future__ import annotations
 
 import argparse
 import bisect
-import signal
-import threading
 
 from robotmodel.bus import Node
 from robotmodel.msgs import JointState
+from robotmodel.signals import stop_on_signals
 from robotmodel.time import Duration, Rate, SystemClock
 
 JOINT_NAMES = ["arm_base_joint", "arm_shoulder_joint", "arm_elbow_joint", "arm_wrist_pitch_joint",
@@ -51,9 +50,7 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--duration", type=float, default=None, help="stop after S seconds (default: run on)")
     args = parser.parse_args()
-    shutdown = threading.Event()
-    for sig in (signal.SIGINT, signal.SIGTERM):
-        signal.signal(sig, lambda *_: shutdown.set())
+    shutdown = stop_on_signals()
     clock = SystemClock()
     with Node("arm_trajectory") as node:
         pub = node.create_publisher(JointState, "/joint_states", 10)

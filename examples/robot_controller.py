@@ -12,11 +12,10 @@ from __future__ import annotations
 
 import argparse
 import math
-import signal
-import threading
 
 from robotmodel.bus import Node
 from robotmodel.msgs import Twist
+from robotmodel.signals import stop_on_signals
 from robotmodel.time import Duration, PlaybackClock, Rate, SystemClock
 
 
@@ -59,9 +58,7 @@ def main() -> None:
     parser.add_argument("--duration", type=float, default=None, help="stop after S seconds (default: run on)")
     parser.add_argument("--time-scale", type=float, default=1.0, help="clock seconds per wall second")
     args = parser.parse_args()
-    stop = threading.Event()
-    for sig in (signal.SIGINT, signal.SIGTERM):
-        signal.signal(sig, lambda *_: stop.set())
+    stop = stop_on_signals()
     clock = PlaybackClock(SystemClock().now(), rate=args.time_scale)
     with Node("robot_controller") as node:
         controller = RobotController(node, clock)

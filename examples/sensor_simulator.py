@@ -16,11 +16,11 @@ from __future__ import annotations
 
 import argparse
 import math
-import signal
 import threading
 
 from robotmodel.bus import Node
 from robotmodel.msgs import JointState, Odometry, TransformStamped, Twist
+from robotmodel.signals import stop_on_signals
 from robotmodel.tf_ros import TransformBroadcaster
 from robotmodel.tf_transformations import quaternion_from_euler
 from robotmodel.time import Duration, PlaybackClock, Rate, SystemClock
@@ -105,9 +105,7 @@ def main() -> None:
     parser.add_argument("--joint-states-topic", default="/joint_states",
                         help="where the wheel angles go (default /joint_states)")
     args = parser.parse_args()
-    stop = threading.Event()
-    for sig in (signal.SIGINT, signal.SIGTERM):
-        signal.signal(sig, lambda *_: stop.set())
+    stop = stop_on_signals()
     clock = PlaybackClock(SystemClock().now(), rate=args.time_scale)
     with Node("sensor_simulator") as node:
         sim = SensorSimulator(node, clock, args.joint_states_topic)

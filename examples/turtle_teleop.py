@@ -6,11 +6,10 @@ Run: python examples/turtle_teleop.py [--linear 0.3] [--angular 0.2] [--duration
 from __future__ import annotations
 
 import argparse
-import signal
-import threading
 
 from robotmodel.bus import Node
 from robotmodel.msgs import Twist
+from robotmodel.signals import stop_on_signals
 from robotmodel.time import Duration, Rate, SystemClock
 
 
@@ -22,9 +21,7 @@ def main() -> None:
     parser.add_argument("--turtle", default="turtle1", help="which turtle to drive")
     parser.add_argument("--duration", type=float, default=None, help="stop after S seconds (default: run on)")
     args = parser.parse_args()
-    shutdown = threading.Event()
-    for sig in (signal.SIGINT, signal.SIGTERM):
-        signal.signal(sig, lambda *_: shutdown.set())
+    shutdown = stop_on_signals()
     clock = SystemClock()
     end = None if args.duration is None else clock.now() + Duration(seconds=args.duration)
     with Node("teleop_turtle") as node:

@@ -9,12 +9,11 @@ Run: python examples/turtle_tf2_broadcaster.py --turtlename turtle1 [--duration 
 from __future__ import annotations
 
 import argparse
-import signal
-import threading
 from typing import Any
 
 from robotmodel.bus import Node
 from robotmodel.msgs import TransformStamped
+from robotmodel.signals import stop_on_signals
 from robotmodel.tf_ros import TransformBroadcaster
 from robotmodel.tf_transformations import quaternion_from_euler
 from robotmodel.time import Duration, SystemClock
@@ -70,9 +69,7 @@ def main() -> None:
     parser.add_argument("--turtlename", default="turtle", help="the turtle whose pose to broadcast")
     parser.add_argument("--duration", type=float, default=None, help="stop after S seconds (default: run on)")
     args = parser.parse_args()
-    shutdown = threading.Event()
-    for sig in (signal.SIGINT, signal.SIGTERM):
-        signal.signal(sig, lambda *_: shutdown.set())
+    shutdown = stop_on_signals()
     with FramePublisher(args.turtlename):
         shutdown.wait(None if args.duration is None else Duration(seconds=args.duration).nanoseconds / 1e9)
 

@@ -13,11 +13,10 @@ from __future__ import annotations
 
 import argparse
 import math
-import signal
-import threading
 
 from robotmodel.bus import Node
 from robotmodel.msgs import Twist
+from robotmodel.signals import stop_on_signals
 from robotmodel.tf import Buffer, Time, TransformException
 from robotmodel.tf_ros import TransformListener
 from robotmodel.time import Duration, Rate, SystemClock
@@ -64,9 +63,7 @@ def main() -> None:
     parser.add_argument("--target-frame", default="turtle1", help="the frame to follow (default turtle1)")
     parser.add_argument("--duration", type=float, default=None, help="stop after S seconds (default: run on)")
     args = parser.parse_args()
-    shutdown = threading.Event()
-    for sig in (signal.SIGINT, signal.SIGTERM):
-        signal.signal(sig, lambda *_: shutdown.set())
+    shutdown = stop_on_signals()
     clock = SystemClock()
     end = None if args.duration is None else clock.now() + Duration(seconds=args.duration)
     node = FrameListener(args.target_frame)

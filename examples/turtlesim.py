@@ -14,12 +14,12 @@ from __future__ import annotations
 
 import argparse
 import math
-import signal
 import threading
 from typing import Any
 
 from robotmodel.bus import Node, typestore
 from robotmodel.msgs import Twist
+from robotmodel.signals import stop_on_signals
 from robotmodel.time import Duration, Rate, SystemClock, Time
 
 POSE_TYPE = "turtlesim/msg/Pose"
@@ -83,9 +83,7 @@ def main() -> None:
                         help="another turtle, as turtlesim's spawn service would add it (repeatable)")
     parser.add_argument("--duration", type=float, default=None, help="stop after S seconds (default: run on)")
     args = parser.parse_args()
-    shutdown = threading.Event()
-    for sig in (signal.SIGINT, signal.SIGTERM):
-        signal.signal(sig, lambda *_: shutdown.set())
+    shutdown = stop_on_signals()
     clock = SystemClock()
     end = None if args.duration is None else clock.now() + Duration(seconds=args.duration)
     pose_type = pose_class()

@@ -19,6 +19,7 @@ Subpackages, one concern each:
 - :mod:`robotmodel.tf_ros`: tf2_ros's broadcasters and listener on the bus.
 - :mod:`robotmodel.publishers`: robot_state_publisher and joint_state_publisher.
 - :mod:`robotmodel.viewer`: meshcat's browser viewer.
+- :mod:`robotmodel.signals`: stopping a long-running tool cleanly on SIGINT/SIGTERM.
 """
 
 from __future__ import annotations

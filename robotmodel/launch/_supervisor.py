@@ -17,9 +17,9 @@ import sys
 import threading
 import time
 from collections.abc import Callable, Sequence
-from types import FrameType
 
 from robotmodel.launch._model import ProcessSpec
+from robotmodel.signals import stop_on_signals
 
 __all__ = ["run_processes"]
 
@@ -50,14 +50,7 @@ def run_processes(specs: Sequence[ProcessSpec], *, log: Callable[[str], None] | 
     """
     say = log or (lambda text: print(text, file=sys.stderr, flush=True))
     if stop is None:
-        stop = threading.Event()
-
-        def handler(signum: int, frame: FrameType | None) -> None:
-            del signum, frame
-            stop.set()
-
-        signal.signal(signal.SIGINT, handler)
-        signal.signal(signal.SIGTERM, handler)
+        stop = stop_on_signals()
     running: dict[int, tuple[str, subprocess.Popen[bytes]]] = {}
     failed = False
     try:

@@ -1,4 +1,4 @@
-"""stop_on_signals: a signal that lands while the main thread holds the stop event's lock still stops the tool."""
+"""robotmodel.signals.stop_on_signals: a signal that lands while the main thread holds the stop event's lock still stops the tool."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ import textwrap
 # Run in a child: with a handler that sets the event itself, the call below never returns.
 _PROBE = textwrap.dedent("""
     import signal
-    from robotmodel.cli._bus_args import stop_on_signals
+    from robotmodel.signals import stop_on_signals
 
     stop = stop_on_signals()
     handler = signal.getsignal(signal.SIGTERM)
@@ -31,7 +31,7 @@ def test_handler_runs_while_the_main_thread_holds_the_event_lock():
 def test_sigterm_stops_a_waiting_main_thread():
     probe = textwrap.dedent("""
         import os, signal, sys
-        from robotmodel.cli._bus_args import stop_on_signals
+        from robotmodel.signals import stop_on_signals
 
         stop = stop_on_signals()
         os.kill(os.getpid(), signal.SIGTERM)
