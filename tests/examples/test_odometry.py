@@ -86,9 +86,11 @@ def test_final_pose_equals_the_integral(live):
     assert (radius, separation) == (0.05, 0.34)
     left = right = 0.0
     prev = first.header.stamp.sec * 10**9 + first.header.stamp.nanosec
+    max_dt = 0.0
     for msg in received[1:]:
         stamp = msg.header.stamp.sec * 10**9 + msg.header.stamp.nanosec
         dt = (stamp - prev) / 1e9
+        max_dt = max(max_dt, dt)
         prev = stamp
         v, w = msg.twist.twist.linear.x, msg.twist.twist.angular.z
         x, y, theta = x + v * math.cos(theta) * dt, y + v * math.sin(theta) * dt, theta + w * dt
@@ -100,7 +102,11 @@ def test_final_pose_equals_the_integral(live):
     assert abs(final["left_wheel"] - left) < 1e-6 and abs(final["right_wheel"] - right) < 1e-6
     # Against the drive pattern's own integral.
     ix, iy, itheta = _ideal_pose()
-    assert abs(x - ix) < 0.1 and abs(y - iy) < 0.1 and abs(theta - itheta) < 0.1, (x, y, theta, ix, iy, itheta)
+    # The simulator samples a real-time command stream: each of the three switches of the pattern
+    # lands up to one step late, and a step is longer when the machine stalls the simulator (at
+    # 0.5 m/s and 0.5 rad/s that costs at most 0.5 per second of step per switch).
+    tol = max(0.1, 3 * 0.5 * max_dt + 0.05)
+    assert abs(x - ix) < tol and abs(y - iy) < tol and abs(theta - itheta) < tol, (x, y, theta, ix, iy, itheta, max_dt)
     # robot_state_publisher turned the wheels by the last joint state: a rotation about y.
     for name, angle in (("left_wheel", left), ("right_wheel", right)):
         r = wheels[name].transform.rotation
