@@ -14,6 +14,8 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, NoReturn
 
+from robotmodel.errors import RobotModelError
+
 if TYPE_CHECKING:
     from robotmodel.model import RobotDescription
 
@@ -23,6 +25,7 @@ __all__ = [
     "add_model_arguments",
     "add_model_options",
     "apply_verbose",
+    "joint_values",
     "load_description",
     "read_stdin_document",
     "split_mappings",
@@ -215,3 +218,17 @@ def write_atomic(path: str | os.PathLike[str], text: str) -> None:
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise
+
+
+def joint_values(words: list[str]) -> dict[str, float]:
+    """``--joint NAME=VALUE`` words to a dict, with one-line errors."""
+    values: dict[str, float] = {}
+    for word in words:
+        name, sep, text = word.partition("=")
+        if not sep or not name:
+            raise RobotModelError(f"--joint expects NAME=VALUE, got '{word}'")
+        try:
+            values[name] = float(text)
+        except ValueError:
+            raise RobotModelError(f"--joint {name}: '{text}' is not a number") from None
+    return values

@@ -8,7 +8,7 @@ import os
 import sys
 from typing import TYPE_CHECKING, Any
 
-from robotmodel.cli._common import add_mapping_arguments
+from robotmodel.cli._common import add_mapping_arguments, add_model_options
 
 if TYPE_CHECKING:
     from collections.abc import Iterator, Sequence
@@ -35,17 +35,7 @@ def register(sub: Any) -> None:
     add_mapping_arguments(parser)
     parser.add_argument("files", metavar="FILE", nargs="*",
                         help="a .urdf or .xacro file or glob ('-' reads stdin)")
-    parser.add_argument(
-        "--package-path", action="append", default=[], metavar="DIR",
-        help="search DIR first for ROS packages ($(find pkg), package://); repeatable",
-    )
-    parser.add_argument(
-        "--untrusted", action="store_true",
-        help="refuse $(env), $(optenv) and reads outside the input's package roots",
-    )
-    parser.add_argument(
-        "--verbose", action="store_true", help="say which copy of each ROS package was used, and why",
-    )
+    add_model_options(parser)
     parser.add_argument("--strict", action="store_true", help="treat lint warnings as errors")
     parser.add_argument(
         "--format", choices=FORMATS, default="text",

@@ -7,9 +7,7 @@ import json
 import math
 from typing import Any
 
-from robotmodel.cli._common import add_model_arguments, load_description
-
-from robotmodel.errors import RobotModelError
+from robotmodel.cli._common import add_model_arguments, joint_values, load_description
 
 
 def register(sub: Any) -> None:
@@ -28,26 +26,13 @@ def register(sub: Any) -> None:
     parser.set_defaults(func=run)
 
 
-def _joint_values(words: list[str]) -> dict[str, float]:
-    values: dict[str, float] = {}
-    for word in words:
-        name, sep, text = word.partition("=")
-        if not sep or not name:
-            raise RobotModelError(f"--joint expects NAME=VALUE, got '{word}'")
-        try:
-            values[name] = float(text)
-        except ValueError:
-            raise RobotModelError(f"--joint {name}: '{text}' is not a number") from None
-    return values
-
-
 def run(args: argparse.Namespace) -> int:
     """Compute and print the poses."""
     from robotmodel.kinematics import KinematicModel, KinematicState
 
     desc, _ = load_description(args)
     model = KinematicModel(desc)
-    state = KinematicState(model).update(_joint_values(args.joint), clamp=args.clamp)
+    state = KinematicState(model).update(joint_values(args.joint), clamp=args.clamp)
     links = [args.link] if args.link else list(model.link_names)
     # An unknown --link is the library's UnknownLinkError, as from every kinematics API.
     poses = {name: state.link_pose(name) for name in links}

@@ -28,8 +28,9 @@ def register(sub: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Serve the page with publishing on."""
+    from robotmodel.cli._common import joint_values
     from robotmodel.cli._live import serve_live
-    from robotmodel.cli.view_cmd import _load, frames_spec, joint_values
+    from robotmodel.cli.view_cmd import _load, frames_spec
 
     desc = _load(args) if args.file is not None else None
     code: int = serve_live(args, desc, joint_values(args.joint), frames_spec(args.frames), publish=True)

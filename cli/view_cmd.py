@@ -10,7 +10,7 @@ import time
 from pathlib import Path
 from typing import Any
 
-from robotmodel.cli._common import add_mapping_arguments
+from robotmodel.cli._common import add_mapping_arguments, joint_values
 from robotmodel.cli._ros_args import add_node_arguments
 
 from robotmodel.errors import RobotModelError
@@ -61,20 +61,6 @@ def register(sub: Any) -> None:
                         help="render the robot with headless Chromium to a PNG and exit")
     parser.add_argument("--size", default="1280x800", metavar="WxH", help="screenshot size (default 1280x800)")
     parser.set_defaults(func=run)
-
-
-def joint_values(words: list[str]) -> dict[str, float]:
-    """``NAME=VALUE`` words to a dict, with one-line errors."""
-    values: dict[str, float] = {}
-    for word in words:
-        name, sep, text = word.partition("=")
-        if not sep or not name:
-            raise RobotModelError(f"--joint expects NAME=VALUE, got '{word}'")
-        try:
-            values[name] = float(text)
-        except ValueError:
-            raise RobotModelError(f"--joint {name}: '{text}' is not a number") from None
-    return values
 
 
 def frames_spec(text: str) -> str | list[str]:
