@@ -13,6 +13,8 @@ import threading
 import time
 from typing import Any
 
+from robotmodel.cli._ros_args import add_node_arguments
+
 __all__ = ["message_to_yaml", "register"]
 
 DEFAULT_TRUNCATE_LENGTH = 128
@@ -59,6 +61,7 @@ def register(sub: Any) -> None:
     echo.add_argument("--timeout", type=float, metavar="N", default=None,
                       help="set a timeout in seconds for waiting")
     _add_bus_options(echo)
+    add_node_arguments(echo, "_robotmodel_topic_echo")  # a relative TOPIC_NAME resolves under --namespace
     echo.set_defaults(func=run_echo)
 
 
@@ -151,7 +154,7 @@ def run_echo(args: argparse.Namespace) -> int:
     lock = threading.Lock()
     problems: list[str] = []
 
-    with Node("_robotmodel_topic_echo", connect=args.connect) as node:
+    with Node(args.node_name or "_robotmodel_topic_echo", args.namespace, connect=args.connect) as node:
         topic = node.resolve_topic_name(args.topic_name)
         typename = args.message_type
         if typename is None:

@@ -102,6 +102,12 @@ def test_two_namespaced_robots_share_tf_but_not_joint_states(live, package: Path
     topics = topic_list(live, expected)
     assert expected <= topics, topics
     assert not {"/joint_states", "/robot_description", "/commands"} & topics, topics
+    # A relative topic name given to topic echo resolves under its --namespace.
+    echo = subprocess.run([sys.executable, "-m", "robotmodel.cli.main", "topic", "echo", "joint_states",
+                           "--namespace", "r1", "--once", "--field", "position", "--timeout", "30"],
+                          env=live.env, capture_output=True, text=True, timeout=60, check=False)
+    assert echo.returncode == 0, echo.stderr
+    assert echo.stdout == f"- {Q1}\n---\n"
     for proc in procs:
         assert proc.stop(signal.SIGTERM) == 0, proc.err[-10:]
 

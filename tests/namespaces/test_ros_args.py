@@ -15,6 +15,7 @@ NODE_COMMANDS = [
     ["joint-state-publisher-gui"],
     ["view", "--follow"],
     ["view-frames"],
+    ["topic", "echo", "joint_states"],
 ]
 
 
