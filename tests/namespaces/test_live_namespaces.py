@@ -137,3 +137,31 @@ def test_ros1_groups_launch_publishes_both_trees(live, package, two_robots):
     labels = sorted(m.group(1) for line in proc.err if (m := STARTED.search(line)))
     assert labels == ["r1/jsp-2", "r1/mount-3", "r1/rsp-1", "r2/jsp-5", "r2/mount-6", "r2/rsp-4"]
     assert proc.stop(signal.SIGTERM) == 0
+
+
+def test_viewer_and_sliders_use_their_namespace(live, package: Path):
+    xacro = str(package / "ns_probe" / "urdf" / "probe.urdf.xacro")
+    view = live.robotmodel("view", xacro, "--follow", "--port", "0", "--namespace", "r1")
+    gui = live.robotmodel("joint-state-publisher-gui", xacro, "--joint", "shoulder=0.4", "--port", "0",
+                          "--ros-args", "-r", "__ns:=/r2")
+    for proc in (view, gui):
+        proc.wait_line(r"^http://127\.0\.0\.1:\d+/", timeout=60)
+    # The sliders publish on /r2/joint_states, nothing on the global topic.
+    echo = subprocess.run([sys.executable, "-m", "robotmodel.cli.main", "topic", "echo", "/r2/joint_states",
+                           "--once", "--field", "position", "--timeout", "30"],
+                          env=live.env, capture_output=True, text=True, timeout=60, check=False)
+    assert echo.returncode == 0, echo.stderr
+    assert echo.stdout == "- 0.4\n---\n"
+    with Node("ns_graph") as node:
+        deadline = time.monotonic() + 30
+        while True:
+            nodes = set(node.get_node_names_and_namespaces())
+            topics = {name for name, _ in node.get_topic_names_and_types()}
+            if ({("robotmodel_view", "/r1"), ("robotmodel_view", "/r2")} <= nodes and "/r1/joint_states" in topics) \
+                    or time.monotonic() > deadline:
+                break
+            time.sleep(0.05)
+    assert {("robotmodel_view", "/r1"), ("robotmodel_view", "/r2")} <= nodes
+    assert "/r1/joint_states" in topics and "/joint_states" not in topics  # --follow's subscription
+    for proc in (view, gui):
+        assert proc.stop(signal.SIGINT) == 0, proc.err[-10:]
