@@ -12,7 +12,7 @@ from datetime import datetime
 from pathlib import Path
 
 from robotmodel.cli._demo_children import Child, Children, private_bus_env
-from robotmodel.cli.demo_cmd import MAP_TO_ODOM, ROBOT, TOPICS
+from robotmodel.cli.demo_cmd import MAP_TO_ODOM, ROBOT, TOPICS, VIEWER_CAMERA
 
 from robotmodel.errors import RobotModelError
 from robotmodel.signals import stop_on_signals
@@ -136,10 +136,11 @@ class Demo:
         self._ready(sim, r"integrating", "sensor_simulator")
         c.example("robot_controller", *scale)
         c.robotmodel("tf2_echo", "map", "base_footprint", "1", on_line=self.echo)
-        # The viewer follows /joint_states (the wheels turn). Not --tf: the robot's own frames'
-        # labels crowd the picture and a headless screenshot takes tens of seconds on a small
-        # machine; with --fixed-frame odom the robot soon drives out of the camera's view.
-        view = c.robotmodel("view", robot, "--follow", "--frames", "none")
+        # The viewer drives the robot as rviz would: joints from /joint_states (the wheels turn),
+        # placed by /tf from odom, the camera riding along behind base_link. No frame triads:
+        # their labels crowd the picture and slow a headless screenshot down.
+        view = c.robotmodel("view", robot, "--follow", "--tf", "--fixed-frame", "odom", "--frames", "none",
+                            "--track", "base_link", f"--camera={VIEWER_CAMERA}")
         found = self._ready(view, r"^(http://127\.0\.0\.1:\d+/\S*)", "view")
         self.url = found.group(1)
         print(f"viewer: {self.url}", flush=True)

@@ -3,7 +3,9 @@
 - no FILE: the robot comes from ``/robot_description`` (latched), and each new description
   there replaces it, as in rviz's RobotModel display;
 - ``--follow``: ``/joint_states`` drives the robot (latest state, redrawn at most 30 times a second);
-- ``--tf``: frames from ``/tf`` and ``/tf_static`` drawn as named axes, placed from the fixed frame;
+- ``--tf``: frames from ``/tf`` and ``/tf_static`` drawn as named axes (those ``--frames`` names),
+  placed from the fixed frame, with the robot where the fixed frame sees its root and, with
+  ``--track FRAME``, the camera following that frame;
 - ``--publish``: the sliders' values go out on ``/joint_states`` (joint_state_publisher_gui).
 """
 
@@ -94,9 +96,15 @@ def _follow(node: Any, viewer: Any) -> Any:
     return node.create_subscription(JointState, "joint_states", on_state, 10)
 
 
-def _tf_loop(buffer: Any, viewer: Any, fixed_frame: str | None, stop: threading.Event) -> None:
+def _tf_loop(buffer: Any, viewer: Any, args: argparse.Namespace, stop: threading.Event) -> None:
+    from robotmodel.cli.view_cmd import frames_spec
+
     from robotmodel.errors import TransformException
     from robotmodel.time import Time
+
+    fixed_frame, track = getattr(args, "fixed_frame", None), getattr(args, "track", None)
+    spec = frames_spec(args.frames) if args.frames is not None else "all"
+    drawn = set() if spec == "none" else set(spec) if spec != "all" else None
 
     while not stop.wait(_TF_PERIOD):
         fixed = fixed_frame or viewer.description.root  # rviz's Fixed Frame
@@ -107,10 +115,12 @@ def _tf_loop(buffer: Any, viewer: Any, fixed_frame: str | None, stop: threading.
             except TransformException:
                 continue
             poses[frame] = _matrix(t)
-        viewer.show_tf(poses)
+        viewer.show_tf(poses if drawn is None else {f: m for f, m in poses.items() if f in drawn})
         root = viewer.description.root
         if root in poses:  # the robot is drawn where the fixed frame sees its root, as in rviz
             viewer.place_robot(poses[root])
+        if track in poses:
+            viewer.track(poses[track][:3, 3])
 
 
 def _matrix(t: Any) -> Any:
@@ -173,8 +183,7 @@ def serve_live(args: argparse.Namespace, desc: Any, initial: dict[str, float], f
 
             buffer = Buffer()
             closers.insert(0, TransformListener(buffer, node))
-            fixed_frame = getattr(args, "fixed_frame", None)
-            threading.Thread(target=_tf_loop, args=(buffer, viewer, fixed_frame, stop), daemon=True).start()
+            threading.Thread(target=_tf_loop, args=(buffer, viewer, args, stop), daemon=True).start()
         print(viewer.url, flush=True)
         if args.open:
             viewer.open()

@@ -21,6 +21,9 @@ ROBOT = "diffbot.urdf.xacro"
 TOPICS = ("/tf", "/tf_static", "/joint_states", "/robot_description", "/odom", "/cmd_vel")
 #: map → odom, as a localization node would publish it.
 MAP_TO_ODOM = ("1.0", "0.5", "0.0")
+#: The viewer's camera (in odom) before it starts following base_link: behind the robot, to its
+#: right and above, so the path ahead and the grid it crosses are in view.
+VIEWER_CAMERA = "-0.6,-0.45,0.4:0,0,0"
 
 
 def register(sub: Any) -> None:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import math
 import os
 import sys
 import tempfile
@@ -29,8 +30,12 @@ def add_viewer_arguments(parser: argparse.ArgumentParser, *, live_flags: bool = 
                         help="serve on this port of 127.0.0.1 (default: 7000, or the next free one)")
     parser.add_argument("--open", action="store_true", help="open the page in the default web browser")
     parser.add_argument("--collisions", action="store_true", help="show collision geometry too")
-    parser.add_argument("--frames", default="none", metavar="all|none|LINK,...",
-                        help="draw these links' frames as named axes (default: none)")
+    parser.add_argument("--frames", default=None, metavar="all|none|LINK,...",
+                        help="draw these links' frames as named axes (default: none); with --tf, these "
+                             "frames from /tf (default: all)")
+    parser.add_argument("--camera", metavar="X,Y,Z[:TX,TY,TZ]",
+                        help="put the camera at X,Y,Z looking at TX,TY,TZ (default 0,0,0): metres in the "
+                             "scene's frame (the fixed frame), Z up; write --camera=-1,... when X is negative")
     parser.add_argument("--joint", action="append", default=[], metavar="NAME=VALUE",
                         help="initial joint value (radians or metres); repeatable")
     parser.add_argument("--no-cache", action="store_true", help="convert meshes again, ignoring the disk cache")
@@ -42,6 +47,9 @@ def add_viewer_arguments(parser: argparse.ArgumentParser, *, live_flags: bool = 
         parser.add_argument("--tf", action="store_true", help="draw the frames on /tf and /tf_static")
         parser.add_argument("--fixed-frame", metavar="FRAME",
                             help="the frame --tf draws from, as rviz's Fixed Frame (default: the robot's root)")
+        parser.add_argument("--track", metavar="FRAME",
+                            help="with --tf: the camera follows FRAME, keeping its offset (and any orbit or "
+                                 "zoom done in the page)")
         parser.add_argument("--publish", action="store_true", help="publish the sliders' values on /joint_states")
     add_node_arguments(parser, "robotmodel_view")
 
@@ -63,11 +71,37 @@ def register(sub: Any) -> None:
     parser.set_defaults(func=run)
 
 
-def frames_spec(text: str) -> str | list[str]:
-    """``all``, ``none`` or a comma-separated list of links."""
+def frames_spec(text: str | None) -> str | list[str]:
+    """``all``, ``none`` (also when not given) or a comma-separated list of links."""
+    if text is None:
+        return "none"
     if text in ("all", "none"):
         return text
     return [name.strip() for name in text.split(",") if name.strip()]
+
+
+Point = tuple[float, float, float]
+
+
+def camera_spec(text: str) -> tuple[Point, Point]:
+    """``X,Y,Z`` or ``X,Y,Z:TX,TY,TZ`` to (position, target); the target defaults to the origin."""
+    bad = f"--camera expects X,Y,Z or X,Y,Z:TX,TY,TZ (metres), got '{text}'"
+    points: list[Point] = []
+    for part in text.split(":"):
+        try:
+            values = [float(v) for v in part.split(",")]
+        except ValueError:
+            raise RobotModelError(bad) from None
+        if len(values) != 3 or not all(math.isfinite(v) for v in values):
+            raise RobotModelError(bad)
+        points.append((values[0], values[1], values[2]))
+    if len(points) == 1:
+        points.append((0.0, 0.0, 0.0))
+    if len(points) != 2:
+        raise RobotModelError(bad)
+    if points[0] == points[1]:
+        raise RobotModelError(f"--camera {text}: the camera cannot stand on the point it looks at")
+    return points[0], points[1]
 
 
 class _Progress:
@@ -127,7 +161,12 @@ def run(args: argparse.Namespace) -> int:
     from robotmodel.cli._live import serve_live
 
     initial = joint_values(args.joint)
-    frames = frames_spec(args.frames)
+    if getattr(args, "track", None) and not getattr(args, "tf", False):
+        raise RobotModelError("--track needs --tf (the frame's pose comes from /tf)")
+    if args.camera is not None:
+        camera_spec(args.camera)  # a bad value fails before the robot is loaded
+    # With --tf, --frames picks the /tf frames drawn (rviz's TF display), not the robot's links.
+    frames = "none" if getattr(args, "tf", False) else frames_spec(args.frames)
     static = bool(getattr(args, "static_html", None) or getattr(args, "screenshot", None))
     if static:
         if args.file is None:
@@ -148,6 +187,8 @@ def make_viewer(args: argparse.Namespace, desc: Any, initial: dict[str, float], 
     cache = Path(tempfile.mkdtemp(prefix="robotmodel-nocache-")) if args.no_cache else None
     viewer = Viewer(desc, serve=serve, port=args.port, package_paths=args.package_path, cache_dir=cache,
                     progress=progress, collisions=args.collisions, frames=frames)
+    if args.camera is not None:
+        viewer.set_camera(*camera_spec(args.camera))
     if initial:
         viewer.display(initial)
     scene = viewer.scene

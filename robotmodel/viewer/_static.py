@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import base64
 import json
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from html import escape
 
 from robotmodel.viewer._server import meshcat_dist
@@ -35,6 +35,7 @@ _TEMPLATE = """<!DOCTYPE html>
     for (var j = 0; j < text.length; j++) bytes[j] = text.charCodeAt(j);
     viewer.handle_command_bytearray(bytes);
   }}
+  viewer.controls.target.fromArray({target});  // what the camera looks at (see _camera.py)
   viewer.render();
   window.robotmodel = {{synced: 1, renders: 1, static: true}};
 }})();
@@ -44,10 +45,14 @@ _TEMPLATE = """<!DOCTYPE html>
 """
 
 
-def static_page(title: str, commands: Iterable[bytes]) -> str:
-    """The HTML text of a page that draws ``commands`` with no server and no network."""
+def static_page(title: str, commands: Iterable[bytes], *, target: Sequence[float] = (0.0, 0.0, 0.0)) -> str:
+    """The HTML text of a page that draws ``commands`` with no server and no network.
+
+    ``target`` is the point (three.js coordinates) the camera looks at.
+    """
     script = (meshcat_dist() / "main.min.js").read_text(encoding="utf-8")
     # A literal "</script" inside the inlined code would end the element early.
     script = script.replace("</script", "<\\/script")
     encoded = json.dumps([base64.b64encode(c).decode("ascii") for c in commands], separators=(",", "\n"))
-    return _TEMPLATE.format(title=escape(title), script=script, commands=encoded)
+    return _TEMPLATE.format(title=escape(title), script=script, commands=encoded,
+                            target=json.dumps([float(v) for v in target]))

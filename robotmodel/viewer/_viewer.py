@@ -17,6 +17,7 @@ from robotmodel.errors import UnknownLinkError
 from robotmodel.kinematics import KinematicModel, joint_transforms, static_transforms
 from robotmodel.model import JointType, RobotDescription
 from robotmodel.viewer import _protocol as wire
+from robotmodel.viewer._camera import CAMERA, Camera, CameraControls, from_three, to_three
 from robotmodel.viewer._scene import ROOT, ProgressFn, build_scene, camera_position, frame_objects, origin_matrix
 from robotmodel.viewer._server import SceneStore, ViewerServer
 from robotmodel.viewer._sliders import SliderJoint, slider_joints
@@ -29,12 +30,11 @@ FramesSpec = str | Iterable[str] | None
 #: Called with every joint's position (sliders' values, mimics computed) when a slider moves.
 JointCallback = Callable[[dict[str, float]], None]
 
-_CAMERA = "/Cameras/default/rotated/<object>"
 #: Scene root of the frames drawn from /tf (beside the robot, not inside its tree).
 TF_ROOT = "tf"
 
 
-class Viewer:
+class Viewer(CameraControls):
     """A robot shown in meshcat's three.js viewer, served from 127.0.0.1 with a joint slider panel.
 
     ``serve=False`` builds the scene without a server (for :meth:`static_html` only).
@@ -60,6 +60,7 @@ class Viewer:
         self._frame_size = 0.1
         self._tf: dict[str, npt.NDArray[np.float64]] = {}
         self._collisions = collisions
+        self._camera: Camera | None = None
         self._install(description, frames)
         self._server: ViewerServer | None = None
         if serve:
@@ -121,7 +122,9 @@ class Viewer:
             if joint.type is JointType.FLOATING and joint.child in paths:
                 store.transforms[paths[joint.child]] = wire.set_transform(paths[joint.child],
                                                                           origin_matrix(joint.origin))
-        store.properties[(_CAMERA, "position")] = wire.set_property(_CAMERA, "position", camera_position(self.model))
+        if self._camera is None:  # the first robot's default view; kept when the robot changes
+            self._camera = Camera(from_three(camera_position(self.model)))
+        store.properties[(CAMERA, "position")] = self._camera.position_command()
 
     def _config(self) -> dict[str, Any]:
         return {
@@ -132,6 +135,7 @@ class Viewer:
                        for r in self.model.mimics.values()],
             "collisions": self._collisions, "frames": list(self._frames),
             "publish": self.publishing, "follow": self.following,
+            "camera": self._camera.message(absolute=True) if self._camera else None,
         }
 
     # ----- joint updates --------------------------------------------------------------------------------------
@@ -342,16 +346,6 @@ class Viewer:
         if commands:
             self._send(commands)
 
-    def place_robot(self, pose: npt.ArrayLike) -> None:
-        """Put the robot's root at ``pose`` (4×4) in the scene: rviz's fixed frame is then not the root."""
-        path = wire.path_of(ROOT)
-        command = wire.set_transform(path, np.asarray(pose, dtype=np.float64))
-        with self._lock:
-            if self._store.transforms.get(path) == command:
-                return
-            self._store.transforms[path] = command
-        self._send([command])
-
     # ----- output ---------------------------------------------------------------------------------------------
     def commands(self) -> list[bytes]:
         """The current scene as packed meshcat commands (what a newly connected page receives)."""
@@ -360,7 +354,8 @@ class Viewer:
 
     def static_html(self) -> str:
         """One self-contained HTML page of the current scene, viewable offline."""
-        return static_page(f"{self.description.name} — robotmodel", self.commands())
+        return static_page(f"{self.description.name} — robotmodel", self.commands(),
+                           target=to_three(self.camera[1]))
 
     @property
     def url(self) -> str | None:

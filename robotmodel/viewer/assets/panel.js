@@ -150,14 +150,34 @@
     if (!state.timing.synced) state.timing.synced = performance.now();
     state.synced = message.seq;
     if (message.token != null) drawnToken = Math.max(drawnToken || 0, message.token);
+    requestDraw();
+  }
+
+  function requestDraw() {
     if (drawTimer !== null) return;
     const wait = lastDrawEnd + Math.max(MIN_PERIOD, lastDrawCost) - performance.now();
     if (wait <= 0) draw();
     else drawTimer = setTimeout(draw, wait);
   }
 
+  // The camera's target lives in OrbitControls, which meshcat's commands cannot reach (see
+  // _camera.py); coordinates are three.js's. Without a position the camera moves along with
+  // the target, keeping the orbit and zoom chosen in this page.
+  function onCamera(message) {
+    const target = new MeshCat.THREE.Vector3().fromArray(message.target);
+    if (message.position) viewer.camera.position.fromArray(message.position);
+    else viewer.camera.position.add(target.clone().sub(viewer.controls.target));
+    viewer.controls.target.copy(target);
+    state.cameraMoves = (state.cameraMoves || 0) + 1;
+    if (state.synced > 0) requestDraw();
+  }
+
   function onText(message) {
-    if (message.type === "config") buildPanel(message);
+    if (message.type === "config") {
+      buildPanel(message);
+      if (message.camera) onCamera(message.camera);
+    }
+    else if (message.type === "camera") onCamera(message);
     else if (message.type === "synced") onSynced(message);
     else if (message.type === "positions") setPositions(message.positions);
     else if (message.type === "status") status(message.text, message.bad);
