@@ -13,13 +13,17 @@ import shutil
 import signal
 import subprocess
 import sys
+import time
 from pathlib import Path
 
+import numpy as np
 import pytest
 from livebus import Proc
 from procscan import assert_none_left
+from robotmodel.cli.demo_cmd import VIEWER_CAMERA
+from robotmodel.cli.view_cmd import camera_spec
 from rosbags.highlevel import AnyReader
-from viewerhelpers import is_robot_grey, png_pixels
+from viewerhelpers import READY, is_robot_grey, png_pixels
 
 DEMO = [sys.executable, "-m", "robotmodel.cli.main", "demo", "--no-browser"]
 
@@ -160,3 +164,74 @@ def test_killing_the_demo_takes_its_children_down(tmp_path: Path) -> None:
         assert_none_left(header.group(1), timeout=20)
     finally:
         proc.kill()
+
+
+# The page's state: the robot's root (/robot) and base_link in the scene's frame (odom), and the
+# camera (three.js's Y-up world, converted here: (x, y, z) -> (x, -z, y)).
+_PAGE_POSES = """(() => { const find = p => viewer.scene_tree.find(p).object;
+  const scene = viewer.scene; scene.updateMatrixWorld(true);
+  const inScene = o => scene.matrixWorld.clone().invert().multiply(o.matrixWorld);
+  const root = find(["robot"]), base = find(["robot", "base_footprint", "base_link"]);
+  const c = viewer.camera.position, t = viewer.controls.target;
+  return {root: Array.from(inScene(root).elements), base: Array.from(inScene(base).elements),
+          camera: [c.x, -c.z, c.y], target: [t.x, -t.z, t.y]}; })()"""
+
+
+def _matrix(x: float, y: float, z: float, qz: float, qw: float) -> np.ndarray:
+    m = np.eye(4)
+    yaw = 2 * math.atan2(qz, qw)
+    m[:2, :2] = [[math.cos(yaw), -math.sin(yaw)], [math.sin(yaw), math.cos(yaw)]]
+    m[:3, 3] = (x, y, z)
+    return m
+
+
+def test_viewer_drives_the_robot_to_where_tf_says_it_ended(tmp_path: Path) -> None:
+    """The demo's viewer places the robot from /tf in odom (not at the origin) and its camera follows
+    base_link: after the odometry pattern has ended, the page shows the robot at the recorded final
+    odom -> base_footprint, base_link where the recorded static transform puts it, and the camera
+    looking at base_link from the demo's offset."""
+    from robotmodel.viewer import Browser
+
+    out = tmp_path / "demo"
+    proc = Proc([*DEMO, "--duration", "60", "--time-scale", "5", "--output", str(out)], _env(), tmp_path)
+    try:
+        header = proc.wait_line(r"private bus \(port (\d+)", timeout=60)
+        url = proc.wait_line(r"^viewer: (http://127\.0\.0\.1:\d+/\S*)", timeout=90).group(1)
+        log = out / "logs" / "robot_controller.log"
+        with Browser(timeout=60) as browser:
+            browser.navigate(url)
+            browser.wait_for(READY, timeout=60)
+            deadline = time.monotonic() + 60
+            while "stopped" not in (log.read_text() if log.exists() else ""):
+                assert time.monotonic() < deadline, "the odometry pattern did not end"
+                time.sleep(0.2)
+            # Stopped: the pose on /tf no longer changes, so the page settles on it.
+            shown = browser.evaluate(_PAGE_POSES)
+            deadline = time.monotonic() + 30
+            while True:
+                time.sleep(0.5)
+                again = browser.evaluate(_PAGE_POSES)
+                if again == shown:
+                    break
+                assert time.monotonic() < deadline, "the page never settled"
+                shown = again
+        code = proc.stop(signal.SIGINT, timeout=60)
+    finally:
+        proc.kill()
+    assert code == 0, "\n".join(proc.out + proc.err)
+    assert_none_left(header.group(1))
+    _, transforms = _read(out / "demo.mcap")
+    odom = max((s, v) for s, p, c, v, _ in transforms if (p, c) == ("odom", "base_footprint"))[1]
+    offset = [v for _s, p, c, v, st in transforms if (p, c) == ("base_footprint", "base_link") and st][-1]
+    t_odom_footprint = _matrix(*odom)
+    t_odom_base = t_odom_footprint @ _matrix(*offset)
+    root = np.asarray(shown["root"]).reshape(4, 4).T
+    base = np.asarray(shown["base"]).reshape(4, 4).T
+    assert np.hypot(*t_odom_footprint[:2, 3]) > 1.0, "the robot ended near the origin: nothing was shown"
+    np.testing.assert_allclose(root, t_odom_footprint, atol=1e-4)
+    np.testing.assert_allclose(base, t_odom_base, atol=1e-4)
+    # The camera: its target on base_link, and the demo's offset from it kept.
+    np.testing.assert_allclose(shown["target"], t_odom_base[:3, 3], atol=1e-4)
+    position, target = camera_spec(VIEWER_CAMERA)
+    np.testing.assert_allclose(np.subtract(shown["camera"], shown["target"]), np.subtract(position, target),
+                               atol=1e-4)
