@@ -4,7 +4,8 @@
   it with a joint slider panel on 127.0.0.1, move joints with :meth:`Viewer.display`
   (redrawn at most 30 times a second, coalescing to the latest), show link frames
   (:meth:`Viewer.show_frames`) and TF frames (:meth:`Viewer.show_tf`), swap the robot
-  (:meth:`Viewer.set_description`), export a self-contained page (:meth:`Viewer.static_html`).
+  (:meth:`Viewer.set_description`), export a self-contained page (:meth:`Viewer.static_html`),
+  place the camera (:meth:`Viewer.set_camera`) or have it follow a point (:meth:`Viewer.track`).
 - :func:`screenshot` / :func:`screenshot_html`: render a page in headless Chromium to PNG.
 - :func:`build_scene`, :func:`load_mesh`: the scene as meshcat commands; one mesh file as
   triangle arrays (through the cache).
