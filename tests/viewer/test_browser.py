@@ -254,3 +254,27 @@ def test_a_streaming_tf_leaves_the_page_time_to_breathe(bus: Bus) -> None:
     assert batches > 0, "no /tf batches arrived while counting"
     assert renders <= elapsed / (1000 / 30) + 2, (elapsed, renders, batches)
     assert drawing <= 0.5 * elapsed + 100, (elapsed, drawing, renders)  # one draw's worth of slack
+
+
+def test_frames_with_tf_picks_the_tf_frames_drawn(bus: Bus) -> None:
+    """With --tf, --frames names the /tf frames drawn as triads (rviz's TF display), the robot still placed."""
+    diffbot = str(DIFFBOT)
+    bus.robotmodel("robot-state-publisher", diffbot)
+    bus.start(sys.executable, "-c", _MOVING_ODOM).wait_line("^broadcasting$", timeout=60)
+    view = bus.robotmodel("view", diffbot, "--tf", "--fixed-frame", "odom", "--frames", "base_footprint,base_link",
+                          "--port", "0")
+    url = view.wait_line(r"^http://127\.0\.0\.1:\d+/$", timeout=120).group(0)
+    try:
+        with Browser(timeout=60) as browser:
+            browser.navigate(url)
+            browser.wait_for(READY, timeout=60)
+            # odom and the sensors' frames are on /tf too, but not drawn (no wheels: no /joint_states).
+            drawn = browser.wait_for("""(() => { const names = Object.keys(viewer.scene_tree.find(["tf"]).children);
+                return names.length >= 2 && names.sort(); })()""", timeout=30)
+            moved = browser.wait_for("""(() => { const m = viewer.scene_tree.find(["robot"]).object.matrix;
+                return m.elements[12] !== 0; })()""", timeout=30)
+    finally:
+        code = view.stop(signal.SIGINT)
+    assert code == 0, view.err[-20:]
+    assert drawn == ["base_footprint", "base_link"]
+    assert moved
