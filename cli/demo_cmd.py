@@ -21,8 +21,8 @@ ROBOT = "diffbot.urdf.xacro"
 TOPICS = ("/tf", "/tf_static", "/joint_states", "/robot_description", "/odom", "/cmd_vel")
 #: map → odom, as a localization node would publish it.
 MAP_TO_ODOM = ("1.0", "0.5", "0.0")
-#: The viewer's camera (in odom) before it starts following base_link: behind the robot, to its
-#: right and above, so the path ahead and the grid it crosses are in view.
+#: The viewer's camera, in odom, before it follows base_link with this offset: above, behind and to
+#: the right of the robot as it sets off along x, close enough for the robot to fill the picture.
 VIEWER_CAMERA = "-0.6,-0.45,0.4:0,0,0"
 
 

@@ -80,6 +80,7 @@ def frames_spec(text: str | None) -> str | list[str]:
     return [name.strip() for name in text.split(",") if name.strip()]
 
 
+#: x, y, z in metres, in the scene's (the fixed frame's) coordinates.
 Point = tuple[float, float, float]
 
 
