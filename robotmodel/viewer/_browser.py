@@ -183,8 +183,10 @@ class Browser:
     def close(self) -> None:
         """Stop Chromium (its whole process group) and remove the profile."""
         try:
-            if self._ws is not None:
-                self._ws.close()
+            if self._ws is not None and not self._loop.is_closed():
+                # Inside the browser's own loop: tornado makes a future for the close frame, which
+                # needs a current loop (the caller's thread may have none).
+                self._loop.run_until_complete(self._close_ws())
         finally:
             self._ws = None
             if self._proc.poll() is None:
@@ -197,6 +199,9 @@ class Browser:
                     self._proc.wait()
             self._loop.close()
             shutil.rmtree(self._profile, ignore_errors=True)
+
+    async def _close_ws(self) -> None:
+        self._ws.close()
 
     def __enter__(self) -> Browser:
         return self

@@ -202,13 +202,13 @@ class ViewerServer:
     def _greet(self, client: _Socket) -> None:
         self._send_text(client, {"type": "config", **self._config()})
         for command in self.store.commands():
-            client.write_message(command, binary=True)
+            _write(client, command, binary=True)
         self._seq += 1
         self._send_text(client, {"type": "synced", "seq": self._seq})
 
     def _send_text(self, client: _Socket, message: dict[str, Any]) -> None:
         with contextlib.suppress(tornado.websocket.WebSocketClosedError):
-            client.write_message(json.dumps(message))
+            _write(client, json.dumps(message))
 
     def broadcast(self, commands: Iterable[bytes], token: int | None = None) -> None:
         """Send commands to every page, then a ``synced`` marker telling it to draw."""
@@ -218,8 +218,8 @@ class ViewerServer:
         for client in list(self._clients):
             try:
                 for command in commands:
-                    client.write_message(command, binary=True)
-                client.write_message(marker)
+                    _write(client, command, binary=True)
+                _write(client, marker)
             except tornado.websocket.WebSocketClosedError:
                 self._clients.discard(client)
 
@@ -254,3 +254,17 @@ class ViewerServer:
 
         loop.add_callback(stop)
         self._thread.join(timeout=5)
+
+
+def _write(client: _Socket, message: bytes | str, *, binary: bool = False) -> None:
+    """Queue ``message``; a page that goes away mid-write is not an error worth a traceback.
+
+    tornado returns a future that fails when the connection closes before the bytes are out;
+    left unread, asyncio prints "Task exception was never retrieved" with a traceback at exit.
+    """
+    client.write_message(message, binary=binary).add_done_callback(_read_outcome)
+
+
+def _read_outcome(future: Any) -> None:
+    if not future.cancelled():
+        future.exception()
