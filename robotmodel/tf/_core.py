@@ -17,7 +17,6 @@ import numpy as np
 import numpy.typing as npt
 
 from robotmodel.errors import (
-    ConnectivityException,
     ExtrapolationException,
     InvalidArgumentException,
     LookupException,
@@ -285,10 +284,6 @@ class BufferCore(FrameGraph):
             qx, qy, qz, qw = quat_canonical(pose[3:])
             return (pose[0], pose[1], pose[2], qx, qy, qz, qw), stamp
 
-    def _loop_error(self, target: str, source: str) -> LookupException:
-        return LookupException("The tf tree is invalid because it contains a loop.\n"
-                               + self._frames_as_string() + "\n", target_frame=target, source_frame=source)
-
     def _walk(self, time_ns: int, target_id: int, source_id: int, target: str, source: str) -> Pose7:
         caches = self._caches
         source_acc: Pose7 | None = None
@@ -350,68 +345,6 @@ class BufferCore(FrameGraph):
             f"{miss.message}, when looking up transform from frame [{source}] to frame [{target}]",
             direction=miss.direction, target_frame=target, source_frame=source, time_ns=time_ns,
             earliest_ns=miss.earliest_ns, latest_ns=miss.latest_ns)
-
-    def _connectivity(self, target: str, source: str) -> ConnectivityException:
-        return ConnectivityException(
-            f"Could not find a connection between '{target}' and '{source}' because they are not part of "
-            "the same tree.Tf has two or more unconnected trees.", target_frame=target, source_frame=source)
-
-    def _latest_common_time(self, target_id: int, source_id: int, target: str, source: str) -> int:
-        caches = self._caches
-        if source_id == target_id:
-            cache = caches[source_id]
-            return cache.latest()[0] if cache is not None else 0
-        chain: list[tuple[int, int]] = []  # (stamp, parent) walking up from source
-        frame = source_id
-        common = 2**63
-        depth = 0
-        while frame:
-            cache = caches[frame]
-            if cache is None or len(cache) == 0:
-                break
-            stamp, parent = cache.latest()
-            if parent == 0:
-                break
-            if stamp:
-                common = min(common, stamp)
-            chain.append((stamp, parent))
-            if parent == target_id:
-                return 0 if common == 2**63 else common
-            frame = parent
-            depth += 1
-            if depth > MAX_GRAPH_DEPTH:
-                raise self._loop_error(target, source)
-        parents = [p for _, p in chain]
-        frame = target_id
-        common_t = 2**63
-        depth = 0
-        ancestor = 0
-        while frame:
-            cache = caches[frame]
-            if cache is None or len(cache) == 0:
-                break
-            stamp, parent = cache.latest()
-            if parent == 0:
-                break
-            if stamp:
-                common_t = min(common_t, stamp)
-            if parent in parents:
-                ancestor = parent
-                break
-            frame = parent
-            if frame == source_id:
-                return 0 if common_t == 2**63 else common_t
-            depth += 1
-            if depth > MAX_GRAPH_DEPTH:
-                raise self._loop_error(target, source)
-        if not ancestor:
-            raise self._connectivity(target, source)
-        for stamp, parent in chain:
-            if stamp:
-                common_t = min(common_t, stamp)
-            if parent == ancestor:
-                break
-        return 0 if common_t == 2**63 else common_t
 
     def can_transform_ns(self, target: str, source: str, time_ns: int) -> tuple[bool, str]:
         """(True, '') when ``lookup_ns`` would succeed, else (False, its error text)."""

@@ -1,10 +1,11 @@
-"""Frame-graph queries other than lookups: tf2's frame reports, and what a waiting lookup depends on."""
+"""Frame-graph queries besides the lookup walk: frame reports, latest common time, what a waiting lookup reads."""
 
 from __future__ import annotations
 
 import threading
 from collections.abc import Iterable
 
+from robotmodel.errors import ConnectivityException, LookupException
 from robotmodel.tf._cache import CacheMiss, StaticCache, TimeCache, format_time
 
 __all__ = ["MAX_GRAPH_DEPTH", "FrameGraph"]
@@ -99,3 +100,69 @@ class FrameGraph:
                     out.append(f"  transform_delay: {(current_time_ns - newest) / 1e9:.3f}\n")
                 out.append(f"  buffer_length: {(newest - oldest) / 1e9:.3f}\n")
             return "".join(out)
+
+    def _loop_error(self, target: str, source: str) -> LookupException:
+        return LookupException("The tf tree is invalid because it contains a loop.\n"
+                               + self._frames_as_string() + "\n", target_frame=target, source_frame=source)
+
+    def _connectivity(self, target: str, source: str) -> ConnectivityException:
+        return ConnectivityException(
+            f"Could not find a connection between '{target}' and '{source}' because they are not part of "
+            "the same tree.Tf has two or more unconnected trees.", target_frame=target, source_frame=source)
+
+    def _latest_common_time(self, target_id: int, source_id: int, target: str, source: str) -> int:
+        caches = self._caches
+        if source_id == target_id:
+            cache = caches[source_id]
+            return cache.latest()[0] if cache is not None else 0
+        chain: list[tuple[int, int]] = []  # (stamp, parent) walking up from source
+        frame = source_id
+        common = 2**63
+        depth = 0
+        while frame:
+            cache = caches[frame]
+            if cache is None or len(cache) == 0:
+                break
+            stamp, parent = cache.latest()
+            if parent == 0:
+                break
+            if stamp:
+                common = min(common, stamp)
+            chain.append((stamp, parent))
+            if parent == target_id:
+                return 0 if common == 2**63 else common
+            frame = parent
+            depth += 1
+            if depth > MAX_GRAPH_DEPTH:
+                raise self._loop_error(target, source)
+        parents = [p for _, p in chain]
+        frame = target_id
+        common_t = 2**63
+        depth = 0
+        ancestor = 0
+        while frame:
+            cache = caches[frame]
+            if cache is None or len(cache) == 0:
+                break
+            stamp, parent = cache.latest()
+            if parent == 0:
+                break
+            if stamp:
+                common_t = min(common_t, stamp)
+            if parent in parents:
+                ancestor = parent
+                break
+            frame = parent
+            if frame == source_id:
+                return 0 if common_t == 2**63 else common_t
+            depth += 1
+            if depth > MAX_GRAPH_DEPTH:
+                raise self._loop_error(target, source)
+        if not ancestor:
+            raise self._connectivity(target, source)
+        for stamp, parent in chain:
+            if stamp:
+                common_t = min(common_t, stamp)
+            if parent == ancestor:
+                break
+        return 0 if common_t == 2**63 else common_t
