@@ -13,6 +13,7 @@ import threading
 import time
 from collections.abc import Callable, Iterator
 from pathlib import Path
+from typing import TypeVar
 
 import pytest
 
@@ -142,6 +143,20 @@ class Bus:
         """Kill whatever is still running."""
         for proc in self.procs:
             proc.kill()
+
+
+B = TypeVar("B", bound=Bus)
+
+
+def joined(bus: B, monkeypatch: pytest.MonkeyPatch) -> Iterator[B]:
+    """Yield ``bus`` with the test process on it too (its env set); every child is reaped after."""
+    for key in ("ROBOTMODEL_ZENOH_PORT", "ROS_DOMAIN_ID"):
+        monkeypatch.setenv(key, bus.env[key])
+    monkeypatch.delenv("ZENOH_SESSION_CONFIG_URI", raising=False)
+    try:
+        yield bus
+    finally:
+        bus.reap()
 
 
 @pytest.fixture

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 from conftest import REPO
-from livebus import Bus, Proc
+from livebus import Bus, Proc, joined
 
 EXAMPLES = REPO / "examples"
 
@@ -24,11 +24,4 @@ class ExampleBus(Bus):
 @pytest.fixture
 def live(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[ExampleBus]:
     """A fresh bus; the test process joins it too (its env is set); every child is reaped."""
-    bus = ExampleBus(tmp_path)
-    for key in ("ROBOTMODEL_ZENOH_PORT", "ROS_DOMAIN_ID"):
-        monkeypatch.setenv(key, bus.env[key])
-    monkeypatch.delenv("ZENOH_SESSION_CONFIG_URI", raising=False)
-    try:
-        yield bus
-    finally:
-        bus.reap()
+    yield from joined(ExampleBus(tmp_path), monkeypatch)

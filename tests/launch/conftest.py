@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
-from livebus import Bus
+from livebus import Bus, joined
 
 # A two-joint robot with a xacro argument. Hand values: base_link -> arm is a z rotation by
 # `shoulder` about a point 0.5 above; arm -> tool is 0.25 along x, so tool sits at
@@ -61,14 +61,7 @@ def pkg(tmp_path: Path) -> Package:
 @pytest.fixture
 def live(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Bus]:
     """A private bus that the test process joins too; every process started on it is reaped."""
-    bus = Bus(tmp_path)
-    for key in ("ROBOTMODEL_ZENOH_PORT", "ROS_DOMAIN_ID"):
-        monkeypatch.setenv(key, bus.env[key])
-    monkeypatch.delenv("ZENOH_SESSION_CONFIG_URI", raising=False)
-    try:
-        yield bus
-    finally:
-        bus.reap()
+    yield from joined(Bus(tmp_path), monkeypatch)
 
 
 def write_ros1(pkg: Package) -> Path:

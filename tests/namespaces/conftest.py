@@ -12,7 +12,7 @@ from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pytest
-from livebus import Bus
+from livebus import Bus, joined
 
 ROBOT_XACRO = """\
 <?xml version="1.0"?>
@@ -101,11 +101,4 @@ def write(package: Path) -> Callable[[str, str], Path]:
 @pytest.fixture
 def live(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Bus]:
     """A private bus (own port and ROS_DOMAIN_ID) that the test process joins too; every child is reaped."""
-    bus = Bus(tmp_path)
-    for key in ("ROBOTMODEL_ZENOH_PORT", "ROS_DOMAIN_ID"):
-        monkeypatch.setenv(key, bus.env[key])
-    monkeypatch.delenv("ZENOH_SESSION_CONFIG_URI", raising=False)
-    try:
-        yield bus
-    finally:
-        bus.reap()
+    yield from joined(Bus(tmp_path), monkeypatch)

@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
-from livebus import Bus, Proc
+from livebus import Bus, Proc, joined
 
 CHILDREN = Path(__file__).with_name("pub_children.py")
 
@@ -23,11 +23,4 @@ class PublisherBus(Bus):
 @pytest.fixture
 def live(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[PublisherBus]:
     """A fresh bus; the test process joins it too (its env is set); every child is reaped."""
-    bus = PublisherBus(tmp_path)
-    for key in ("ROBOTMODEL_ZENOH_PORT", "ROS_DOMAIN_ID"):
-        monkeypatch.setenv(key, bus.env[key])
-    monkeypatch.delenv("ZENOH_SESSION_CONFIG_URI", raising=False)
-    try:
-        yield bus
-    finally:
-        bus.reap()
+    yield from joined(PublisherBus(tmp_path), monkeypatch)
