@@ -39,3 +39,27 @@ def test_sigterm_stops_a_waiting_main_thread():
     """)
     result = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, timeout=30, check=False)
     assert result.stdout.strip() == "stopped", result.stderr
+
+
+def test_signal_landing_on_another_thread_wakes_a_main_thread_waiting_without_timeout():
+    # The kernel may deliver a process-directed SIGTERM to any thread that does not block it:
+    # in a bus process, usually one of zenoh's. The main thread, asleep in stop.wait() with no
+    # timeout, is then never interrupted, so Python's handler never runs unless something
+    # else wakes the watcher. Deliver it to a worker thread on purpose.
+    probe = textwrap.dedent("""
+        import signal, threading
+        from robotmodel.signals import stop_on_signals
+
+        stop = stop_on_signals()
+        worker = threading.Thread(target=lambda: signal.pthread_kill(threading.get_ident(), signal.SIGTERM))
+        threading.Timer(0.2, worker.start).start()
+        stop.wait()
+        print("stopped")
+    """)
+    try:
+        result = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, timeout=20,
+                                check=False)
+    except subprocess.TimeoutExpired:
+        raise AssertionError("SIGTERM on a worker thread did not stop the waiting main thread") from None
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.strip() == "stopped"
