@@ -21,7 +21,8 @@ runs a zenoh router for machines to meet. ``ROS_DOMAIN_ID`` picks the domain.
 Pieces: :class:`Node` (publishers, subscriptions, graph queries), :class:`Context` (one
 session shared by nodes), :class:`QoS` and tf2_ros's presets, the wire helpers
 (:func:`topic_keyexpr`, :class:`Entity` for liveliness tokens, :class:`Attachment`), and
-:func:`codec_for` / :func:`register_codec` for message classes.
+:func:`codec_for` / :func:`register_codec` for message classes. ``Node(..., remappings=[...])``
+takes ROS 2 remap rules (:class:`RemapRule`), as ``--ros-args -r`` gives them to rcl.
 """
 
 from __future__ import annotations
@@ -54,6 +55,7 @@ from robotmodel.bus._qos import (
     qos_from_keyexpr,
     qos_to_keyexpr,
 )
+from robotmodel.bus._remap import RemapKind, RemapRule, parse_rules, remap_topic
 from robotmodel.errors import BusError
 
 __all__ = [
@@ -79,6 +81,8 @@ __all__ = [
     "RawMessage",
     "RawSample",
     "Reliability",
+    "RemapKind",
+    "RemapRule",
     "RosbagsCodec",
     "Subscription",
     "TFRecords",
@@ -87,9 +91,11 @@ __all__ = [
     "default_domain_id",
     "gid_of",
     "mangle",
+    "parse_rules",
     "qos_from_keyexpr",
     "qos_to_keyexpr",
     "register_codec",
+    "remap_topic",
     "resolve_topic",
     "ros_type_name",
     "topic_keyexpr",

@@ -24,6 +24,7 @@ from robotmodel.bus._names import (
     validate_node_name,
 )
 from robotmodel.bus._qos import QOS_DEFAULT, QoS
+from robotmodel.bus._remap import RemapRule, node_name_of, node_namespace_of, parse_rules, remap_topic
 from robotmodel.errors import BusError, MessageError
 
 __all__ = ["Context", "Node", "Publisher", "RawMessage", "Subscription", "default_domain_id"]
@@ -292,13 +293,18 @@ class Node:
     Without ``context``, the node opens (and on close, ends) a session of its own; pass
     ``domain_id``, ``connect`` and ``backend`` as for :class:`Context`. Message types are
     classes with ``__msgtype__`` or ROS type names (meaning rosbags' classes).
+    ``remappings`` are ROS 2 remap rules (``"joint_states:=/arm/joint_states"``,
+    ``"__ns:=/r1"``, ``"rsp:/tf:=/r1/tf"``), applied as rcl applies ``--ros-args -r`` rules
+    to every topic the node names; see :mod:`robotmodel.bus._remap`.
     """
 
     def __init__(self, name: str, namespace: str = "/", *, context: Context | None = None,
                  domain_id: int | None = None, connect: Sequence[str] = (), backend: str | Backend = "zenoh",
-                 enclave: str = "/") -> None:
-        self.name = validate_node_name(name)
-        self.namespace = validate_namespace(namespace)
+                 enclave: str = "/", remappings: Sequence[str | RemapRule] = ()) -> None:
+        self.remappings = parse_rules(remappings)
+        # rcl renames and moves the node by the name it was created with, then remaps topics by the new one.
+        self.name = validate_node_name(node_name_of(self.remappings, name))
+        self.namespace = validate_namespace(node_namespace_of(self.remappings, name, namespace))
         self.enclave = validate_namespace(enclave)
         self._owns_context = context is None
         self.context = context if context is not None else Context(
@@ -317,9 +323,10 @@ class Node:
         """The node's namespace (rclpy spelling)."""
         return self.namespace
 
-    def resolve_topic_name(self, topic: str) -> str:
-        """The fully qualified topic name, expanded as rcl does."""
-        return resolve_topic(topic, self.namespace, self.name)
+    def resolve_topic_name(self, topic: str, *, only_expand: bool = False) -> str:
+        """The fully qualified topic name, expanded as rcl does, then remapped (unless ``only_expand``)."""
+        full = resolve_topic(topic, self.namespace, self.name)
+        return full if only_expand else remap_topic(self.remappings, full, self.name, self.namespace)
 
     def create_publisher(self, msg_type: type[M] | str, topic: str, qos: QoSLike = QOS_DEFAULT) -> Publisher[M]:
         """A publisher of ``msg_type`` on ``topic``."""
