@@ -3,6 +3,9 @@
 rmw_zenoh serializes ``(int64 sequence_number, int64 source_timestamp_ns, uint8[16] gid)``
 with zenoh-ext's serializer: two little-endian int64, then the array as a sequence, i.e. a
 LEB128 length (one byte, 0x10) followed by the 16 bytes. 33 bytes in all.
+
+Reading, we do as rmw_zenoh's deserializer: the three fields are taken from the front and
+whatever follows them is not looked at, so a longer attachment is still read.
 """
 
 from __future__ import annotations
@@ -22,8 +25,8 @@ _WHOLE = struct.Struct("<qqB16s")
 
 
 def is_attachment(data: bytes) -> bool:
-    """Whether ``data`` has rmw_zenoh's attachment layout (the check on the hot path)."""
-    return len(data) == ATTACHMENT_SIZE and data[_GID_LEN_OFFSET] == _GID_LEN
+    """Whether ``data`` starts with rmw_zenoh's attachment layout (the check on the hot path)."""
+    return len(data) >= ATTACHMENT_SIZE and data[_GID_LEN_OFFSET] == _GID_LEN
 
 
 class AttachmentWriter:
@@ -57,10 +60,10 @@ class Attachment(NamedTuple):
 
     @classmethod
     def decode(cls, data: bytes) -> Attachment:
-        """Read the 33 bytes back; raises BusError when they are not an rmw_zenoh attachment."""
-        if len(data) != ATTACHMENT_SIZE:
-            raise BusError(f"attachment of {len(data)} bytes, expected {ATTACHMENT_SIZE}")
+        """Read the first 33 bytes; raises BusError when they are not an rmw_zenoh attachment."""
+        if len(data) < ATTACHMENT_SIZE:
+            raise BusError(f"attachment of {len(data)} bytes, expected at least {ATTACHMENT_SIZE}")
         seq, stamp, n = _HEAD.unpack_from(data)
         if n != _GID_LEN:
             raise BusError(f"attachment GID length {n}, expected {_GID_LEN}")
-        return cls(seq, stamp, bytes(data[_HEAD.size:]))
+        return cls(seq, stamp, bytes(data[_HEAD.size:ATTACHMENT_SIZE]))

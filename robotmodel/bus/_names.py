@@ -38,7 +38,7 @@ __all__ = [
 
 ADMIN_SPACE = "@ros2_lv"
 _TOKEN = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
-_DDS_TYPE = re.compile(r"^([A-Za-z0-9_]+)::(msg|srv|action)::dds_::([A-Za-z0-9_]+)_$")
+_DDS_MARK = "dds_::"
 
 
 class EntityKind(StrEnum):
@@ -118,9 +118,15 @@ def dds_type_name(typename: str) -> str:
 
 
 def ros_type_name(dds_name: str) -> str:
-    """``pkg::msg::dds_::Name_`` -> ``pkg/msg/Name``; other text is returned unchanged."""
-    m = _DDS_TYPE.match(dds_name)
-    return f"{m.group(1)}/{m.group(2)}/{m.group(3)}" if m else dds_name
+    """``pkg::msg::dds_::Name_`` -> ``pkg/msg/Name``, as rmw_zenoh's graph cache demangles it.
+
+    Text ending in '_' and holding ``dds_::``: the part before it with every '::' made '/',
+    then the name without its final '_'. Other text is returned unchanged.
+    """
+    at = dds_name.find(_DDS_MARK)
+    if not dds_name.endswith("_") or at < 0:
+        return dds_name
+    return dds_name[:at].replace("::", "/") + dds_name[at + len(_DDS_MARK):-1]
 
 
 def topic_keyexpr(domain_id: int, topic: str, typename: str, type_hash: str) -> str:

@@ -4,6 +4,8 @@ rmw_zenoh writes an entity's QoS into its liveliness token as
 ``rel:dur:hist,depth:dl_s,dl_ns:ls_s,ls_ns:liv,lease_s,lease_ns``, leaving every field that
 equals its own default (RELIABLE, VOLATILE, KEEP_LAST, depth 42, infinite durations,
 AUTOMATIC liveliness) empty; enum fields are written as rmw's integer values.
+Reading it back accepts, per policy, exactly the integers rmw_zenoh's own tables hold
+(so a token rmw_zenoh ignores is ignored here too).
 """
 
 from __future__ import annotations
@@ -42,6 +44,8 @@ class Reliability(IntEnum):
     SYSTEM_DEFAULT = 0
     RELIABLE = 1
     BEST_EFFORT = 2
+    # rmw_zenoh reads UNKNOWN from tokens but not BEST_AVAILABLE (4), so neither do we.
+    UNKNOWN = 3
 
 
 class Durability(IntEnum):
@@ -50,6 +54,8 @@ class Durability(IntEnum):
     SYSTEM_DEFAULT = 0
     TRANSIENT_LOCAL = 1
     VOLATILE = 2
+    # As for Reliability: UNKNOWN is read from tokens, BEST_AVAILABLE (4) is not.
+    UNKNOWN = 3
 
 
 class History(IntEnum):
@@ -58,6 +64,7 @@ class History(IntEnum):
     SYSTEM_DEFAULT = 0
     KEEP_LAST = 1
     KEEP_ALL = 2
+    UNKNOWN = 3
 
 
 class Liveliness(IntEnum):
@@ -65,7 +72,10 @@ class Liveliness(IntEnum):
 
     SYSTEM_DEFAULT = 0
     AUTOMATIC = 1
+    # 2 is rmw's deprecated MANUAL_BY_NODE, which rmw_zenoh does not read.
     MANUAL_BY_TOPIC = 3
+    UNKNOWN = 4
+    BEST_AVAILABLE = 5
 
 
 @dataclass(frozen=True, slots=True)
@@ -75,7 +85,8 @@ class QoS:
     ``block`` is local to our publishers and never on the wire: when True a reliable
     publisher waits for the network instead of dropping (zenoh's congestion control
     BLOCK); when None it follows rmw_zenoh (BLOCK only for reliable + keep-all).
-    Durations are integer nanoseconds; ``DURATION_INFINITE_NS`` means unset.
+    Durations are integer nanoseconds; ``DURATION_INFINITE_NS`` means none, and 0 is rclpy's
+    unspecified ``Duration()``, which :meth:`resolved` makes infinite as rmw_zenoh does.
     """
 
     depth: int = 10
@@ -93,10 +104,17 @@ class QoS:
             raise BusError(f"QoS depth must be >= 0, got {self.depth}")
 
     def resolved(self) -> QoS:
-        """The profile rmw_zenoh actually uses: system defaults replaced, depth 0 made 42."""
+        """The profile rmw_zenoh actually uses: system defaults replaced, depth 0 made 42.
+
+        rmw_zenoh's best_available_qos also turns an unspecified duration ({0 s, 0 ns}) into
+        its default, infinite, so such a profile writes the same token text as the default.
+        """
         return replace(
             self,
             depth=self.depth or DEFAULT_DEPTH,
+            deadline_ns=self.deadline_ns or DURATION_INFINITE_NS,
+            lifespan_ns=self.lifespan_ns or DURATION_INFINITE_NS,
+            liveliness_lease_ns=self.liveliness_lease_ns or DURATION_INFINITE_NS,
             reliability=self.reliability or Reliability.RELIABLE,
             durability=self.durability or Durability.VOLATILE,
             history=self.history or History.KEEP_LAST,
@@ -174,6 +192,13 @@ def qos_from_keyexpr(text: str) -> QoS:
             raise BusError(f"invalid QoS text '{text}' in a liveliness token")
         return int(s)
 
+    def policy(s: str, default: int) -> int:
+        # rmw_zenoh looks policies up by their exact decimal text ('01' is not 1).
+        value = num(s, default)
+        if s and s != str(value):
+            raise BusError(f"invalid QoS text '{text}' in a liveliness token")
+        return value
+
     def dur(s: str, ns: str) -> int:
         sec, nsec = num(s, inf_s), num(ns, inf_ns)
         return sec * _NS + nsec
@@ -181,12 +206,12 @@ def qos_from_keyexpr(text: str) -> QoS:
     try:
         return QoS(
             depth=num(groups[2][1], DEFAULT_DEPTH),
-            reliability=Reliability(num(parts[0], Reliability.RELIABLE)),
-            durability=Durability(num(parts[1], Durability.VOLATILE)),
-            history=History(num(groups[2][0], History.KEEP_LAST)),
+            reliability=Reliability(policy(parts[0], Reliability.RELIABLE)),
+            durability=Durability(policy(parts[1], Durability.VOLATILE)),
+            history=History(policy(groups[2][0], History.KEEP_LAST)),
             deadline_ns=dur(groups[3][0], groups[3][1]),
             lifespan_ns=dur(groups[4][0], groups[4][1]),
-            liveliness=Liveliness(num(groups[5][0], Liveliness.AUTOMATIC)),
+            liveliness=Liveliness(policy(groups[5][0], Liveliness.AUTOMATIC)),
             liveliness_lease_ns=dur(groups[5][1], groups[5][2]),
         )
     except ValueError as exc:

@@ -1,0 +1,272 @@
+"""Our reading and writing of rmw_zenoh's graph and sample forms, against forms built by hand.
+
+Each expected value below is written out from rmw_zenoh's rules (Jazzy, zenoh 1.x), not
+computed with our own helpers:
+
+- QoS text in a liveliness token (liveliness_utils ``qos_to_keyexpr``/``keyexpr_to_qos``):
+  ``rel:dur:hist,depth:dl_sec,dl_nsec:ls_sec,ls_nsec:liv,lease_sec,lease_nsec``, each field
+  left empty when it equals rmw_zenoh's default (reliable 1, volatile 2, keep-last 1, depth
+  42, durations {9223372036 s, 854775807 ns} = RMW_DURATION_INFINITE, liveliness automatic 1).
+  Before writing, rmw_zenoh's ``best_available_qos`` turns a system-default policy (0) into
+  its default, depth 0 into 42, and an unspecified duration ({0, 0}, rclpy's
+  ``Duration()``) into infinite.
+- Reading a token back, rmw_zenoh accepts for each policy exactly the integers of its
+  lookup tables: reliability, durability and history 0..3 (system default, the two
+  policies, unknown), liveliness 0, 1, 3, 4, 5 (not 2, the deprecated manual-by-node); any
+  other value makes it ignore the token. Numbers are decimal.
+- Types in tokens and keys are ``pkg::msg::dds_::Name_``; the graph shows them as rmw_zenoh's
+  graph cache demangles them: text ending in '_' and holding ``dds_::`` becomes the part
+  before ``dds_::`` with every ``::`` made '/', then the name without its final '_';
+  anything else is shown as it is.
+- Attachment: rmw_zenoh reads int64 sequence number, int64 source time, then the GID as a
+  zenoh-ext sequence (LEB128 length that must be 16, then 16 bytes), and does not look at
+  what follows; a sample without an attachment is dropped.
+"""
+
+from __future__ import annotations
+
+import json
+import struct
+import threading
+import time
+
+import pytest
+import zenoh
+
+from robotmodel.bus import (
+    Attachment,
+    BusError,
+    Entity,
+    Node,
+    QoS,
+    RawMessage,
+    gid_of,
+    qos_from_keyexpr,
+    qos_to_keyexpr,
+    ros_type_name,
+)
+from robotmodel.bus._attachment import is_attachment
+from robotmodel.bus._config import rendezvous_endpoint
+from robotmodel.bus._qos import DURATION_INFINITE_NS, Durability, History, Liveliness, Reliability
+
+INF = DURATION_INFINITE_NS
+STRING_HASH = "RIHS01_df668c740482bbd48fb39d76a70dfd4bd59db1288021743503259e948f6b1a18"
+
+
+def token(kind: str, qos: str, *, ns: str = "%", node: str = "talker", topic: str = "%chatter",
+          enclave: str = "%", ids: str = "0/10") -> str:
+    """An entity token as an rmw_zenoh node writes it (domain 0, a made-up session id)."""
+    return (f"@ros2_lv/0/8b20917502ee955ac4476e0266340d5c/{ids}/{kind}/{enclave}/{ns}/{node}/{topic}/"
+            f"std_msgs::msg::dds_::String_/{STRING_HASH}/{qos}")
+
+
+# --- writing the QoS text -----------------------------------------------------------------
+
+@pytest.mark.parametrize(("qos", "text"), [
+    # rclcpp's SensorDataQoS: best effort, keep last 5.
+    (QoS(5, Reliability.BEST_EFFORT), "2::,5:,:,:,,"),
+    # tf2_ros StaticBroadcasterQoS: transient local, keep last 1.
+    (QoS(1, durability=Durability.TRANSIENT_LOCAL), ":1:,1:,:,:,,"),
+    # KeepAll with depth 0: the depth becomes 42, the default, so it is left empty.
+    (QoS(0, history=History.KEEP_ALL), "::2,:,:,:,,"),
+    # System defaults everywhere: rmw_zenoh's defaults, all empty.
+    (QoS(0, Reliability.SYSTEM_DEFAULT, Durability.SYSTEM_DEFAULT, History.SYSTEM_DEFAULT,
+         liveliness=Liveliness.SYSTEM_DEFAULT), "::,:,:,:,,"),
+    # A deadline of 100 ms: {0 s, 100000000 ns}; 0 s differs from the default seconds.
+    (QoS(10, deadline_ns=100_000_000), "::,10:0,100000000:,:,,"),
+    # Manual-by-topic liveliness with a 1.5 s lease.
+    (QoS(10, liveliness=Liveliness.MANUAL_BY_TOPIC, liveliness_lease_ns=1_500_000_000),
+     "::,10:,:,:3,1,500000000"),
+    # rclpy's unspecified durations (Duration() = 0 ns) are made infinite before writing.
+    (QoS(10, deadline_ns=0, lifespan_ns=0, liveliness_lease_ns=0), "::,10:,:,:,,"),
+])
+def test_qos_text_as_rmw_zenoh_writes_it(qos: QoS, text: str) -> None:
+    assert qos_to_keyexpr(qos) == text
+
+
+def test_unspecified_durations_resolve_to_infinite() -> None:
+    q = QoS(10, deadline_ns=0, lifespan_ns=0, liveliness_lease_ns=0).resolved()
+    assert (q.deadline_ns, q.lifespan_ns, q.liveliness_lease_ns) == (INF, INF, INF)
+
+
+# --- reading tokens real nodes write ------------------------------------------------------
+
+def test_compact_default_qos_from_a_real_node_parses() -> None:
+    e = Entity.parse(token("MS", "::,10:,:,:,,", ids="0/12"))
+    assert e.qos == QoS(10)
+    assert (e.node_id, e.entity_id, e.topic, e.typename, e.type_hash) == (
+        0, 12, "/chatter", "std_msgs/msg/String", STRING_HASH)
+    # Every field empty: rmw_zenoh's defaults, depth 42.
+    assert Entity.parse(token("MS", "::,:,:,:,,")).qos == QoS(42)
+
+
+def test_nested_namespace_enclave_and_topic_are_demangled() -> None:
+    e = Entity.parse(token("MP", "2::,5:,:,:,,", ns="%robots%r1", enclave="%secure%arm",
+                           topic="%robots%r1%scan"))
+    assert (e.namespace, e.enclave, e.topic, e.node_fqn) == ("/robots/r1", "/secure/arm", "/robots/r1/scan",
+                                                            "/robots/r1/talker")
+    assert e.qos == QoS(5, Reliability.BEST_EFFORT)
+    # Written back, it is the same text (and so the same GID as the writer's).
+    assert e.keyexpr == e.token
+
+
+@pytest.mark.parametrize(("text", "expected"), [
+    # liveliness BEST_AVAILABLE (5) and UNKNOWN (4) are in rmw_zenoh's table.
+    ("::,10:,:,:5,,", QoS(10, liveliness=Liveliness.BEST_AVAILABLE)),
+    ("::,10:,:,:4,,", QoS(10, liveliness=Liveliness.UNKNOWN)),
+    # UNKNOWN (3) reliability, durability and history too.
+    ("3:3:3,10:,:,:,,", QoS(10, Reliability.UNKNOWN, Durability.UNKNOWN, History.UNKNOWN)),
+    # rclpy's best-available durations {9223372036 s, 854775806 ns} are plain durations.
+    ("::,10:9223372036,854775806:,:,9223372036,854775806",
+     QoS(10, deadline_ns=INF - 1, liveliness_lease_ns=INF - 1)),
+])
+def test_policies_rmw_zenoh_accepts_are_read(text: str, expected: QoS) -> None:
+    assert qos_from_keyexpr(text) == expected
+    assert Entity.parse(token("MS", text)).qos == expected
+
+
+@pytest.mark.parametrize("text", [
+    "4::,10:,:,:,,",        # reliability BEST_AVAILABLE: not in rmw_zenoh's table
+    ":4:,10:,:,:,,",        # durability BEST_AVAILABLE: same
+    "::4,10:,:,:,,",        # no history 4
+    "::,10:,:,:2,,",        # liveliness 2 (deprecated manual-by-node): not in the table
+    "::,10:,:,:,",          # liveliness needs three components
+    "::,x:,:,:,,",          # not a number
+    "::01,10:,:,:,,",       # policies are looked up by their exact text
+    "::,10:,:,",            # too few fields
+])
+def test_tokens_rmw_zenoh_rejects_are_rejected(text: str) -> None:
+    with pytest.raises(BusError):
+        qos_from_keyexpr(text)
+    with pytest.raises(BusError):
+        Entity.parse(token("MS", text))
+
+
+@pytest.mark.parametrize(("dds", "ros"), [
+    ("std_msgs::msg::dds_::String_", "std_msgs/msg/String"),
+    ("example_interfaces::srv::dds_::AddTwoInts_", "example_interfaces/srv/AddTwoInts"),
+    ("action_tutorials::action::dds_::Fibonacci_SendGoal_", "action_tutorials/action/Fibonacci_SendGoal"),
+    # More (or fewer) '::' chunks before dds_:: all become '/'.
+    ("pkg::msg::detail::dds_::Thing_", "pkg/msg/detail/Thing"),
+    ("pkg::dds_::Thing_", "pkg/Thing"),
+    # Not a ROS DDS name: shown as it is.
+    ("std_msgs::msg::String", "std_msgs::msg::String"),
+    ("plain_", "plain_"),
+])
+def test_type_names_demangled_as_rmw_zenohs_graph_cache(dds: str, ros: str) -> None:
+    assert ros_type_name(dds) == ros
+
+
+# --- the attachment -----------------------------------------------------------------------
+
+GID = bytes(range(16))
+
+
+def test_attachment_bytes_by_hand() -> None:
+    by_hand = (7).to_bytes(8, "little", signed=True) + (-5).to_bytes(8, "little", signed=True) + b"\x10" + GID
+    assert Attachment(7, -5, GID).encode() == by_hand
+    assert Attachment.decode(by_hand) == (7, -5, GID)
+
+
+def test_trailing_bytes_after_the_gid_are_ignored() -> None:
+    att = struct.pack("<qqB", 3, 1_700_000_000_000_000_000, 16) + GID + b"\x01\x02\x03\x04"
+    assert is_attachment(att)
+    assert Attachment.decode(att) == (3, 1_700_000_000_000_000_000, GID)
+
+
+@pytest.mark.parametrize("att", [
+    b"",
+    struct.pack("<qqB", 1, 2, 16) + GID[:15],           # GID cut short
+    struct.pack("<qqB", 1, 2, 24) + GID + bytes(8),     # a 24-byte GID: rmw_zenoh wants 16
+    struct.pack("<qq", 1, 2),
+])
+def test_attachments_rmw_zenoh_cannot_read_are_refused(att: bytes) -> None:
+    assert not is_attachment(att)
+    with pytest.raises(BusError):
+        Attachment.decode(att)
+
+
+# --- live: a plain zenoh session playing an rmw_zenoh node --------------------------------
+
+def plain_session() -> zenoh.Session:
+    """A zenoh peer on the test's rendezvous, configured like an rmw_zenoh session."""
+    config = zenoh.Config()
+    config.insert_json5("mode", '"peer"')
+    config.insert_json5("listen/endpoints", '["tcp/127.0.0.1:0"]')
+    config.insert_json5("connect/endpoints", json.dumps([rendezvous_endpoint()]))
+    config.insert_json5("scouting/multicast/enabled", "false")
+    config.insert_json5("timestamping/enabled", "true")
+    return zenoh.open(config)
+
+
+def test_samples_from_another_writer_by_their_attachment(bus_env: dict[str, str]) -> None:
+    domain = int(bus_env["ROS_DOMAIN_ID"])
+    got: list[RawMessage] = []
+    arrived = threading.Condition()
+
+    def on_msg(m: RawMessage) -> None:
+        with arrived:
+            got.append(m)
+            arrived.notify_all()
+
+    key = f"{domain}/chatter/std_msgs::msg::dds_::String_/{STRING_HASH}"
+    payload = b"\x00\x01\x00\x00" + struct.pack("<I", 3) + b"hi\x00"
+    with Node("listener") as node:
+        node.create_subscription("std_msgs/msg/String", "/chatter", on_msg, raw=True)
+        other = plain_session()
+        try:
+            pub = other.declare_publisher(key)
+            end = time.monotonic() + 10
+            while not pub.matching_status.matching and time.monotonic() < end:
+                time.sleep(0.01)
+            # What rmw_zenoh drops: no attachment, a short one, a GID length other than 16.
+            pub.put(payload)
+            pub.put(payload, attachment=struct.pack("<qqB", 1, 2, 16) + GID[:8])
+            pub.put(payload, attachment=struct.pack("<qqB", 1, 2, 24) + GID + bytes(8))
+            # What it reads: the three fields, whatever follows them.
+            pub.put(payload, attachment=struct.pack("<qqB", 5, 6, 16) + GID + b"more")
+            pub.put(payload, attachment=struct.pack("<qqB", 7, 8, 16) + GID)
+            with arrived:
+                assert arrived.wait_for(lambda: len(got) >= 2, 10), got
+        finally:
+            other.close()
+    assert [(m.attachment.sequence_number, m.attachment.source_timestamp_ns, m.attachment.gid) for m in got] == [
+        (5, 6, GID), (7, 8, GID)]
+    assert [m.payload for m in got] == [payload, payload]
+
+
+def test_graph_shows_a_real_nodes_tokens(bus_env: dict[str, str]) -> None:
+    domain = int(bus_env["ROS_DOMAIN_ID"])
+    zid = "8b20917502ee955ac4476e0266340d5c"
+    head = f"@ros2_lv/{domain}/{zid}"
+    # As rclcpp's talker in namespace /robots/r1 (enclave '/') declares them: its ids come
+    # from one counter that rclcpp's own parameter services and /rosout also draw from.
+    tokens = [
+        f"{head}/0/0/NN/%/%robots%r1/talker",
+        f"{head}/0/10/MP/%/%robots%r1/talker/%robots%r1%chatter/std_msgs::msg::dds_::String_/{STRING_HASH}/"
+        "::,7:,:,:,,",
+        # ros2 topic echo's best-available liveliness: rmw_zenoh keeps the token.
+        f"{head}/0/11/MS/%/%robots%r1/talker/%robots%r1%cmd/std_msgs::msg::dds_::String_/{STRING_HASH}/"
+        "2::,10:,:,:5,,",
+        # Best-available reliability: rmw_zenoh ignores the token, so does the graph.
+        f"{head}/0/12/MS/%/%robots%r1/talker/%robots%r1%ignored/std_msgs::msg::dds_::String_/{STRING_HASH}/"
+        "4::,10:,:,:,,",
+    ]
+    with Node("viewer") as node:
+        other = plain_session()
+        try:
+            held = [other.liveliness().declare_token(t) for t in tokens]
+            graph = node.context.graph
+            assert graph.wait_for(lambda es: len([e for e in es if e.zid == zid]) >= 3, 10)
+            assert ("talker", "/robots/r1") in node.get_node_names_and_namespaces()
+            topics = dict(node.get_topic_names_and_types())
+            assert topics["/robots/r1/chatter"] == ["std_msgs/msg/String"]
+            assert topics["/robots/r1/cmd"] == ["std_msgs/msg/String"]
+            assert "/robots/r1/ignored" not in topics
+            pub = graph.by_gid(gid_of(tokens[1]))
+            assert pub is not None and pub.qos == QoS(7)
+            for h in held:
+                h.undeclare()
+            assert graph.wait_for(lambda es: not [e for e in es if e.zid == zid], 10)
+        finally:
+            other.close()
