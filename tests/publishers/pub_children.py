@@ -17,7 +17,6 @@ from __future__ import annotations
 
 import json
 import queue
-import signal
 import sys
 import threading
 import time
@@ -31,10 +30,11 @@ def say(obj: Any) -> None:
 
 
 def _stop_event() -> threading.Event:
-    stop = threading.Event()
-    signal.signal(signal.SIGTERM, lambda *_: stop.set())
-    signal.signal(signal.SIGINT, lambda *_: stop.set())
-    return stop
+    # As the tools: a handler that sets the event itself never runs when the kernel hands
+    # SIGTERM to one of zenoh's threads while the main thread sleeps in stop.wait().
+    from robotmodel.signals import stop_on_signals
+
+    return stop_on_signals()
 
 
 def _ns(stamp: Any) -> int:

@@ -21,7 +21,6 @@ from __future__ import annotations
 
 import json
 import math
-import signal
 import sys
 import threading
 import time
@@ -35,10 +34,11 @@ def pose_at(t_ns: int, t0_ns: int) -> tuple[list[float], list[float]]:
 
 
 def _stop_event() -> threading.Event:
-    stop = threading.Event()
-    signal.signal(signal.SIGTERM, lambda *_: stop.set())
-    signal.signal(signal.SIGINT, lambda *_: stop.set())
-    return stop
+    # As the tools: a handler that sets the event itself never runs when the kernel hands
+    # SIGTERM to one of zenoh's threads while the main thread sleeps in stop.wait().
+    from robotmodel.signals import stop_on_signals
+
+    return stop_on_signals()
 
 
 def broadcaster(name: str, t0_ns: int, wait_go: bool) -> None:

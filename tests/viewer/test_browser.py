@@ -144,11 +144,10 @@ def test_slider_publishes_joint_states_seen_by_another_process(bus: Bus, tmp_pat
 
 
 _SUBSCRIBER = """
-import signal, sys, threading
 from robotmodel.bus import Node
 from robotmodel.msgs import JointState
-stop = threading.Event()
-signal.signal(signal.SIGTERM, lambda *a: stop.set())
+from robotmodel.signals import stop_on_signals
+stop = stop_on_signals()  # an Event set from a handler would miss a SIGTERM landing on a zenoh thread
 def on_state(msg):
     for name, value in zip(msg.name, msg.position):
         if name == "panda_joint2":
@@ -212,12 +211,12 @@ def test_screenshot_command_writes_a_png_of_the_robot(tmp_path: Path) -> None:
 
 
 _MOVING_ODOM = """
-import math, signal, threading, time
+import math, time
 from robotmodel.bus import Node
+from robotmodel.signals import stop_on_signals
 from robotmodel.tf import make_transform
 from robotmodel.tf_ros import TransformBroadcaster
-stop = threading.Event()
-signal.signal(signal.SIGTERM, lambda *a: stop.set())
+stop = stop_on_signals()  # an Event set from a handler would miss a SIGTERM landing on a zenoh thread
 with Node("odometry") as node:
     broadcaster = TransformBroadcaster(node)
     print("broadcasting", flush=True)
