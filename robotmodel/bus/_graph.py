@@ -66,8 +66,13 @@ class Graph:
         return [(name, sorted(types)) for name, types in sorted(topics.items())]
 
     def node_names_and_namespaces(self) -> list[tuple[str, str]]:
-        """Every node as (name, namespace), as rclpy's ``get_node_names_and_namespaces()``."""
-        return sorted({(e.node_name, e.namespace) for e in self.entities() if e.kind is EntityKind.NODE})
+        """Every node as (name, namespace), as rclpy's ``get_node_names_and_namespaces()``.
+
+        As in rmw_zenoh's graph cache, a node is one (session id, node id), known from any of
+        its tokens; nodes sharing a name are each listed.
+        """
+        nodes = {(e.zid, e.node_id): (e.node_name, e.namespace) for e in self.entities()}
+        return sorted(nodes.values())
 
     def endpoints(self, topic: str, kind: EntityKind) -> list[Entity]:
         """The publishers or subscriptions on one fully qualified topic."""

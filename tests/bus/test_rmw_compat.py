@@ -270,3 +270,32 @@ def test_graph_shows_a_real_nodes_tokens(bus_env: dict[str, str]) -> None:
             assert graph.wait_for(lambda es: not [e for e in es if e.zid == zid], 10)
         finally:
             other.close()
+
+
+def test_node_list_counts_nodes_as_rmw_zenohs_graph_cache(bus_env: dict[str, str]) -> None:
+    # rmw_zenoh's graph holds one node per (session id, node id), made from whichever of its
+    # tokens comes first, and lists every one: two 'talker' nodes are listed twice (ros2
+    # node list then warns that names are shared).
+    domain = int(bus_env["ROS_DOMAIN_ID"])
+    a, b, c = "1a2b", "3c4d", "5e6f"
+    tokens = [
+        f"@ros2_lv/{domain}/{a}/0/0/NN/%/%/talker",
+        f"@ros2_lv/{domain}/{b}/3/3/NN/%/%/talker",
+        # A node known only from its publisher's token.
+        f"@ros2_lv/{domain}/{c}/7/8/MP/%/%/lonely/%chatter/std_msgs::msg::dds_::String_/{STRING_HASH}/::,7:,:,:,,",
+        # Its second entity names the same node: still one node.
+        f"@ros2_lv/{domain}/{c}/7/9/MS/%/%/lonely/%chatter/std_msgs::msg::dds_::String_/{STRING_HASH}/::,7:,:,:,,",
+    ]
+    with Node("viewer") as node:
+        other = plain_session()
+        try:
+            held = [other.liveliness().declare_token(t) for t in tokens]
+            graph = node.context.graph
+            assert graph.wait_for(lambda es: len([e for e in es if e.zid in (a, b, c)]) == 4, 10)
+            listed = node.get_node_names_and_namespaces()
+            assert sorted(n for n in listed if n[0] != "viewer") == [
+                ("lonely", "/"), ("talker", "/"), ("talker", "/")]
+            for h in held:
+                h.undeclare()
+        finally:
+            other.close()
