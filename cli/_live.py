@@ -152,8 +152,13 @@ def serve_live(args: argparse.Namespace, desc: Any, initial: dict[str, float], f
             from robotmodel.bus import Node
 
             # Relative robot_description and joint_states: under --namespace, as rviz's displays resolve them.
+            ros = getattr(args, "ros", None)
+            if ros is not None:
+                from robotmodel.cli._ros_args import warn_ignored_params
+
+                warn_ignored_params(ros, args.namespace, getattr(args, "node_name", None) or "robotmodel_view")
             node = Node(getattr(args, "node_name", None) or "robotmodel_view", getattr(args, "namespace", "/"),
-                        connect=args.connect)
+                        connect=args.connect, remappings=ros.remaps if ros is not None else ())
             closers.append(node)
         topic = None
         if desc is None:

@@ -1,15 +1,25 @@
-"""A node's namespace and name on the command line, the ROS 2 way, for every node-running command.
+"""ROS 2 arguments for every node-running command: ``--ros-args ... [--]`` blocks, read as rcl reads them.
 
-- ``--ros-args ... [--]`` blocks, read as rcl reads them: ``-r``/``--remap`` rules
-  ``__ns:=/ns`` (fully qualified, as rcl requires) and ``__node:=name`` (or ``__name:=``),
-  each optionally limited to one node by a ``node:`` prefix; the first matching rule wins,
-  as in rcl. Other ROS arguments (topic remaps, parameters, log levels) are accepted and
-  have no effect here, so command lines written for ROS run unchanged.
+- ``-r``/``--remap`` rules, rcl's syntax and semantics (see :mod:`robotmodel.bus._remap`):
+  ``__ns:=/ns`` (fully qualified) and ``__node:=name`` (or ``__name:=``) move and rename the
+  node; ``from:=to`` remaps a topic, matched on its fully expanded name (relative names under
+  the node's namespace, ``~/x`` under the node), the replacement expanded the same way, e.g.
+  ``-r joint_states:=/arm/joint_states`` or ``-r /tf:=/r1/tf``. A ``node:`` prefix limits a
+  rule to that node; the first matching rule wins. Topic rules go to the command's
+  :class:`robotmodel.bus.Node` (``remappings=``), so /tf, /tf_static, joint_states and
+  robot_description all follow them. A malformed rule stops the command with rcl's text.
+- ``-p``/``--param [node:]name:=value`` and ``--params-file FILE``: parameter overrides, typed
+  and merged as rcl and rclcpp do (:mod:`robotmodel.cli._ros_params`): the value given last
+  on the command line wins. robot-state-publisher and joint-state-publisher map them onto
+  their settings (the parameter wins over the same setting's ``--flag``, as ``__ns`` wins
+  over ``--namespace``); other commands say which overrides they ignore.
+- ``--log-level``, ``--enclave``, ``--log-config-file``, ``--log-file-name`` and rcl's
+  ``--enable-*``/``--disable-*`` flags are accepted and have no effect here.
 - ``--namespace NS``: the namespace a node is created with in code (rclpy's
   ``Node(namespace=...)``): ``r1`` means ``/r1``. An ``__ns`` remap overrides it, as in ROS.
 
 Relative topic names then land under the namespace (``joint_states`` → ``/r1/joint_states``);
-absolute ones such as ``/tf`` do not.
+absolute ones such as ``/tf`` do not, unless a remap rule says so.
 """
 
 from __future__ import annotations
@@ -18,6 +28,7 @@ import argparse
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Any
 
 __all__ = [
     "RosArgs",
@@ -25,9 +36,12 @@ __all__ = [
     "add_node_arguments",
     "logger_name",
     "node_namespace",
+    "node_params",
     "settle",
     "split_node_words",
+    "split_ros_words",
     "take_ros_args",
+    "warn_ignored_params",
 ]
 
 _TOKEN = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
@@ -35,6 +49,7 @@ _TOKEN = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 _VALUE_FLAGS = frozenset({"-p", "--param", "--params-file", "-e", "--enclave", "--log-level",
                           "--log-config-file", "--log-file-name"})
 _REMAP_FLAGS = ("-r", "--remap")
+_PARAM_FLAGS = ("-p", "--param")
 
 
 class RosArgsError(ValueError):
@@ -47,6 +62,10 @@ class RosArgs:
 
     namespace: str | None = None
     node_name: str | None = None
+    #: Topic remap rules (``[node:]from:=to``), in command-line order, for ``Node(remappings=...)``.
+    remaps: tuple[str, ...] = ()
+    #: Parameter overrides (node pattern, name, value), in command-line order; see ``_ros_params``.
+    params: tuple[tuple[str, str, Any], ...] = ()
 
 
 def _check_namespace(namespace: str) -> str:
@@ -59,38 +78,43 @@ def _check_namespace(namespace: str) -> str:
         raise RosArgsError(str(exc)) from None
 
 
-def _rule(flag: str, rule: str, node_name: str | None, found: dict[str, str]) -> None:
-    where = f"Couldn't parse remap rule: '{flag} {rule}'. Error:"
-    lhs, sep, rhs = rule.partition(":=")
-    if not sep:
-        raise RosArgsError(f"{where} expected ':=' in the rule")
-    prefix, colon, name = lhs.rpartition(":")
-    if colon and not _TOKEN.fullmatch(prefix):
-        raise RosArgsError(f"{where} invalid node name prefix '{prefix}'")
-    if colon and node_name is not None and prefix != node_name:
+def _rule(flag: str, text: str, node_name: str | None, found: dict[str, str], remaps: list[str]) -> None:
+    from robotmodel.bus._remap import RemapKind, RemapRule, rule_problem
+
+    where = f"Couldn't parse remap rule: '{flag} {text}'. Error:"
+    problem = rule_problem(text)
+    if problem:
+        raise RosArgsError(f"{where} {problem}")
+    rule = RemapRule.parse(text)
+    if rule.kind not in (RemapKind.NAMESPACE, RemapKind.NODE_NAME):
+        remaps.append(text)  # matched later against the node's final name, as rcl does
+        return
+    if rule.node is not None and node_name is not None and rule.node != node_name:
         return  # a rule for another node
-    if name == "__ns":
-        if not rhs.startswith("/"):
-            raise RosArgsError(f"{where} Namespace not remapped to a fully qualified name (found: {rhs})")
+    if rule.kind is RemapKind.NAMESPACE:
         try:
-            value = _check_namespace(rhs)
+            value = _check_namespace(rule.replacement)
         except RosArgsError:
-            raise RosArgsError(f"{where} Namespace not remapped to a fully qualified name (found: {rhs})") from None
+            raise RosArgsError(f"{where} Namespace not remapped to a fully qualified name "
+                               f"(found: {rule.replacement})") from None
         found.setdefault("namespace", value)
-    elif name in ("__node", "__name"):
-        if not _TOKEN.fullmatch(rhs):
-            raise RosArgsError(f"{where} Node name not remapped to invalid name: '{rhs}'")
-        found.setdefault("node_name", rhs)
+    else:
+        found.setdefault("node_name", rule.replacement)
 
 
 def take_ros_args(words: Sequence[str], node_name: str | None = None) -> tuple[RosArgs, list[str]]:
     """Take the ``--ros-args`` blocks out of ``words``: (what they set, the other words).
 
     Each block runs to a ``--`` (dropped too) or to the end. ``node_name`` is the node's
-    default name, against which ``node:``-prefixed rules are matched (None: all apply).
+    default name, against which ``node:``-prefixed ``__ns``/``__node`` rules are matched
+    (None: all apply). Params files are read here, so a bad one stops the command early.
     """
+    from robotmodel.cli._ros_params import file_entries, rule_entry
+
     rest: list[str] = []
     found: dict[str, str] = {}
+    remaps: list[str] = []
+    params: list[tuple[str, str, Any]] = []
     inside = False
     i = 0
     while i < len(words):
@@ -102,15 +126,33 @@ def take_ros_args(words: Sequence[str], node_name: str | None = None) -> tuple[R
                 rest.append(word)
         elif word == "--":
             inside = False
-        elif word in _REMAP_FLAGS:
+        elif word in _REMAP_FLAGS or word in _VALUE_FLAGS:
             if i + 1 >= len(words):
-                raise RosArgsError(f"Couldn't parse trailing {word} flag. No remap rule found.")
-            _rule(word, words[i + 1], node_name, found)
-            i += 1
-        elif word in _VALUE_FLAGS:
+                raise RosArgsError(_trailing(word))
+            value = words[i + 1]
+            if word in _REMAP_FLAGS:
+                _rule(word, value, node_name, found, remaps)
+            elif word in _PARAM_FLAGS:
+                params.append(rule_entry(word, value))
+            elif word == "--params-file":
+                params.extend(file_entries(word, value))
             i += 1
         i += 1
-    return RosArgs(found.get("namespace"), found.get("node_name")), rest
+    return RosArgs(found.get("namespace"), found.get("node_name"), tuple(remaps), tuple(params)), rest
+
+
+def _trailing(flag: str) -> str:
+    if flag in _REMAP_FLAGS:
+        return f"Couldn't parse trailing {flag} flag. No remap rule found."
+    if flag in _PARAM_FLAGS:
+        return f"Couldn't parse trailing {flag} flag. No parameter override rule found."
+    if flag == "--log-level":
+        return f"Couldn't parse trailing log level flag: '{flag}'. No log level provided."
+    if flag in ("-e", "--enclave"):
+        return f"Couldn't parse trailing {flag} flag. No enclave path provided."
+    if flag == "--log-file-name":
+        return f"Couldn't parse trailing {flag} flag. No string prefix provided."
+    return f"Couldn't parse trailing {flag} flag. No file path provided."
 
 
 def node_namespace(option: str | None, ros: RosArgs) -> str:
@@ -122,8 +164,8 @@ def node_namespace(option: str | None, ros: RosArgs) -> str:
     return _check_namespace(option)
 
 
-def split_node_words(words: Sequence[str], node_name: str | None = None) -> tuple[list[str], str, str | None]:
-    """For commands parsing their own words: (other words, namespace, node name override or None).
+def split_ros_words(words: Sequence[str], node_name: str | None = None) -> tuple[list[str], str, RosArgs]:
+    """For commands parsing their own words: (other words, namespace, the ``--ros-args`` settings).
 
     Takes the ``--ros-args`` blocks and ``--namespace NS`` / ``--namespace=NS`` out.
     """
@@ -143,7 +185,31 @@ def split_node_words(words: Sequence[str], node_name: str | None = None) -> tupl
         else:
             rest.append(word)
         i += 1
-    return rest, node_namespace(option, ros), ros.node_name
+    return rest, node_namespace(option, ros), ros
+
+
+def split_node_words(words: Sequence[str], node_name: str | None = None) -> tuple[list[str], str, str | None]:
+    """:func:`split_ros_words` giving the ``__node`` override (or None) instead of all settings."""
+    rest, namespace, ros = split_ros_words(words, node_name)
+    return rest, namespace, ros.node_name
+
+
+def node_params(ros: RosArgs, namespace: str, name: str) -> dict[str, Any]:
+    """The parameter overrides the node ``namespace``/``name`` gets (matched on its final FQN)."""
+    from robotmodel.cli._ros_params import for_node
+
+    found: dict[str, Any] = for_node(ros.params, namespace.rstrip("/") + "/" + name)
+    return found
+
+
+def warn_ignored_params(ros: RosArgs, namespace: str, name: str) -> None:
+    """For commands with no parameters: one rcutils WARN line per override the node would get."""
+    from robotmodel.cli._ros_params import warn_unused
+    from robotmodel.cli._rosfmt import ros_log
+
+    warn_unused(node_params(ros, namespace, name), lambda _n: False,
+                lambda text: ros_log("WARN", logger_name(namespace, name), text),
+                {"use_sim_time": "there is no /clock here", "qos_overrides": "QoS overrides are not read here"})
 
 
 def add_node_arguments(parser: argparse.ArgumentParser, node_name: str) -> None:
@@ -159,13 +225,21 @@ def add_node_arguments(parser: argparse.ArgumentParser, node_name: str) -> None:
                         help="the node's namespace ('r1' means /r1): relative topics such as joint_states "
                         "and robot_description move under it, /tf and /tf_static do not. ROS 2's "
                         "'--ros-args -r __ns:=/r1' (and -r __node:=NAME) also work, and win")
-    parser.epilog = ((parser.epilog or "") + " ROS 2 arguments (--ros-args ... [--]) may follow.").strip()
+    parser.epilog = ((parser.epilog or "") + " ROS 2 arguments (--ros-args ... [--]) may follow: -r FROM:=TO "
+                     "remaps a topic of this node (-r joint_states:=/arm/joint_states, -r /tf:=/r1/tf), "
+                     "-r __ns:=/NS and -r __node:=NAME move and rename it, -p NAME:=VALUE and "
+                     "--params-file FILE set parameters (the last given wins).").strip()
 
 
 def settle(parsed: argparse.Namespace, ros: RosArgs) -> None:
-    """Replace ``parsed.namespace`` by the node's absolute namespace and set ``parsed.node_name``."""
+    """Replace ``parsed.namespace`` by the node's absolute namespace; set ``parsed.node_name`` and ``parsed.ros``.
+
+    ``parsed.ros`` keeps the topic remaps (for ``Node(remappings=parsed.ros.remaps)``) and
+    the parameter overrides (:func:`node_params`).
+    """
     parsed.namespace = node_namespace(getattr(parsed, "namespace", None), ros)
     parsed.node_name = ros.node_name
+    parsed.ros = ros
 
 
 def logger_name(namespace: str, node_name: str) -> str:

@@ -9,6 +9,14 @@ from robotmodel.cli._common import add_mapping_arguments
 from robotmodel.cli._ros_args import add_node_arguments
 
 _NODE = "joint_state_publisher"
+_BOOLS = ("publish_default_positions", "publish_default_velocities", "publish_default_efforts", "use_mimic_tags",
+          "use_smallest_joint_limits")
+_WHY = {
+    "dependent_joints": "joint_state_publisher replaces it with the URDF's mimic tags once a robot is loaded",
+    "robot_description": "joint_state_publisher reads the robot from FILE or the robot_description topic",
+    "use_sim_time": "there is no /clock here",
+    "qos_overrides": "QoS overrides are not read here",
+}
 
 
 def _zero(word: str) -> tuple[str, float]:
@@ -41,6 +49,13 @@ def register(sub: Any) -> None:
         "--zeros or a --source-list topic says otherwise; mimic joints follow their masters. Without FILE "
         "the robot comes from /robot_description, and every new description there is followed. "
         "Put FILE before --zeros/--source-list. Runs until Ctrl-C or SIGTERM.",
+        epilog="Parameters (--ros-args -p NAME:=VALUE or --params-file FILE): rate, "
+        "publish_default_positions, publish_default_velocities, publish_default_efforts, "
+        "use_mimic_tags, use_smallest_joint_limits (bool), source_list (a list: "
+        "source_list:=\"['/a/joint_states']\"), delta, zeros.JOINT (numbers; in a params file "
+        "'zeros: {j1: 0.5}'). A parameter wins over the same setting's --flag (zeros per joint); "
+        "dependent_joints and robot_description are reported and ignored, as joint_state_publisher "
+        "takes mimic joints from the URDF and the robot from FILE or the topic.",
     )
     add_mapping_arguments(parser)
     parser.add_argument("file", metavar="FILE", nargs="?", help="a .urdf or .xacro file (default: the "
@@ -60,22 +75,61 @@ def register(sub: Any) -> None:
     parser.set_defaults(func=run)
 
 
+def _settings(args: argparse.Namespace, name: str, log: Any) -> dict[str, Any]:
+    """The publisher's keyword settings: the flags, then the node's parameter overrides over them."""
+    from robotmodel.cli._ros_args import RosArgsError, node_params
+    from robotmodel.cli._ros_params import typed, warn_unused
+
+    values = node_params(args.ros, args.namespace, name)
+    # joint_state_publisher declares its parameters from the overrides (rclpy), so a number is a number.
+    rate = typed(values, "rate", "integer", "double")
+    if rate is not None:
+        if not (isinstance(rate, (int, float)) and rate > 0):
+            raise RosArgsError(f"rate must be a positive number of Hz, got '{rate}'")
+        args.rate = float(rate)
+    settings: dict[str, Any] = {"rate": args.rate, "zeros": dict(args.zeros), "source_list": list(args.source_list)}
+    for flag in _BOOLS:
+        value = typed(values, flag, "bool")
+        if value is not None:
+            settings[flag] = value
+    delta = typed(values, "delta", "double", "integer")
+    if isinstance(delta, (int, float)):
+        settings["delta"] = float(delta)
+    sources = typed(values, "source_list", "string_array")
+    if isinstance(sources, tuple):
+        settings["source_list"] = [str(topic) for topic in sources]
+    for param in values:
+        zero = typed(values, param, "double", "integer") if param.startswith("zeros.") else None
+        if isinstance(zero, (int, float)):
+            settings["zeros"][param.removeprefix("zeros.")] = float(zero)
+    warn_unused(values, lambda n: n in _BOOLS or n in ("rate", "delta", "source_list") or n.startswith("zeros."),
+                log.warning, _WHY)
+    return settings
+
+
 def run(args: argparse.Namespace) -> int:
     """Load the robot (or wait for it on the bus) and publish until stopped."""
+    import sys
+
     from robotmodel.cli._bus_args import stop_on_signals
     from robotmodel.cli._common import load_description
     from robotmodel.cli._publisher_log import ros_console
-    from robotmodel.cli._ros_args import logger_name
+    from robotmodel.cli._ros_args import RosArgsError, logger_name
 
     from robotmodel.bus import Node
     from robotmodel.publishers import JointStatePublisher
 
-    desc = load_description(args)[0] if args.file is not None else None
     name = args.node_name or _NODE
     log = ros_console(logger_name(args.namespace, name))
+    try:
+        settings = _settings(args, name, log)
+    except RosArgsError as exc:
+        print(f"robotmodel joint-state-publisher: error: {exc}", file=sys.stderr)
+        return 2
+    desc = load_description(args)[0] if args.file is not None else None
     stop = stop_on_signals()
     # joint_states, robot_description and relative --source-list topics resolve under the namespace.
-    with Node(name, args.namespace, connect=args.connect) as node, JointStatePublisher(
-            desc, bus=node, rate=args.rate, zeros=dict(args.zeros), source_list=args.source_list, logger=log):
+    with Node(name, args.namespace, connect=args.connect, remappings=args.ros.remaps) as node, JointStatePublisher(
+            desc, bus=node, logger=log, **settings):
         stop.wait()
     return 0

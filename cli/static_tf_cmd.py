@@ -13,7 +13,7 @@ import time
 from typing import Any
 
 from robotmodel.cli._bus_args import split_connect, stop_on_signals
-from robotmodel.cli._ros_args import RosArgsError, split_node_words
+from robotmodel.cli._ros_args import RosArgsError, split_ros_words, warn_ignored_params
 from robotmodel.cli._rosfmt import ros_log
 from robotmodel.cli._static_args import (
     USAGE,
@@ -34,7 +34,7 @@ def register(sub: Any) -> None:
         prefix_chars="+", add_help=False,
         help="publish a static transform on /tf_static (tf2_ros's flags and positional forms)",
         description="--x X --y Y --z Z [--qx --qy --qz --qw | --roll --pitch --yaw] --frame-id F "
-        "--child-frame-id C [--connect ENDPOINT] [--namespace NS] [--ros-args -r __ns:=/NS]; "
+        "--child-frame-id C [--connect ENDPOINT] [--namespace NS] [--ros-args -r __ns:=/NS -r /tf_static:=TOPIC]; "
         "or x y z yaw pitch roll F C [period_ms]; or "
         "x y z qx qy qz qw F C [period_ms]",
     )
@@ -51,7 +51,7 @@ def _transform(spec: StaticTransformSpec, stamp_ns: int) -> Any:
 def run(args: argparse.Namespace) -> int:
     """Parse, validate, publish, then wait for a stop signal."""
     try:
-        words, namespace, node_name = split_node_words(args.words)
+        words, namespace, ros = split_ros_words(args.words)
     except RosArgsError as exc:
         print(f"robotmodel static-transform-publisher: error: {exc}", file=sys.stderr)
         return 2
@@ -68,7 +68,7 @@ def run(args: argparse.Namespace) -> int:
 
     from robotmodel.tf_ros._node import unique_name
 
-    name = node_name or unique_name("static_transform_publisher_")
+    name = ros.node_name or unique_name("static_transform_publisher_")
     errors = validation_errors(spec, name)
     if errors:
         for line in errors:
@@ -80,7 +80,8 @@ def run(args: argparse.Namespace) -> int:
     from robotmodel.tf_ros import StaticTransformBroadcaster, TransformBroadcaster
 
     # /tf and /tf_static are absolute: the namespace names the node only, as in ROS.
-    with Node(name, namespace, connect=endpoints) as node:
+    warn_ignored_params(ros, namespace, name)
+    with Node(name, namespace, connect=endpoints, remappings=ros.remaps) as node:
         if spec.period_ms is None:
             with StaticTransformBroadcaster(node) as static:
                 static.send_transform(_transform(spec, time.time_ns()))

@@ -25,7 +25,7 @@ from robotmodel.cli._echo_fmt import (
     parse_echo_args,
     waiting_message,
 )
-from robotmodel.cli._ros_args import RosArgsError, split_node_words
+from robotmodel.cli._ros_args import RosArgsError, split_ros_words, warn_ignored_params
 from robotmodel.cli._rosfmt import ros_log
 
 __all__ = ["can_transform_reason", "register", "run"]
@@ -38,7 +38,7 @@ def register(sub: Any) -> None:
     parser: argparse.ArgumentParser = sub.add_parser(
         "tf2-echo", aliases=["tf2_echo"], prefix_chars="\x01", add_help=False,
         help="print a transform from the bus (or a recording: --bag FILE) in tf2_echo's format",
-        description="tf2-echo SOURCE TARGET [RATE] [--connect ENDPOINT] [--namespace NS] | "
+        description="tf2-echo SOURCE TARGET [RATE] [--connect ENDPOINT] [--namespace NS] [--ros-args -r /tf:=TOPIC] | "
                     "tf2-echo --bag FILE SOURCE TARGET [--time T | --every DT] [--urdf FILE]",
     )
     parser.add_argument("words", nargs="*")
@@ -67,7 +67,7 @@ def can_transform_reason(buffer: Any, target: str, source: str) -> str:
 def run(args: argparse.Namespace) -> int:
     """Listen, wait for the frames, then print the transform at the given rate."""
     try:
-        words, namespace, node_name = split_node_words(args.words, _NODE)
+        words, namespace, ros = split_ros_words(args.words, _NODE)
     except RosArgsError as exc:
         print(f"robotmodel tf2-echo: error: {exc}", file=sys.stderr)
         return 2
@@ -104,7 +104,9 @@ def run(args: argparse.Namespace) -> int:
     source, target = echo.source_frame, echo.target_frame
     buffer = Buffer()
     # /tf and /tf_static are absolute: the namespace names the node only, as in ROS.
-    with Node(node_name or _NODE, namespace, connect=endpoints) as node, TransformListener(buffer, node):
+    warn_ignored_params(ros, namespace, ros.node_name or _NODE)
+    with Node(ros.node_name or _NODE, namespace, connect=endpoints, remappings=ros.remaps) as node, \
+            TransformListener(buffer, node):
         last_log = -1.0
         while not stop.is_set():
             reason = can_transform_reason(buffer, source, target)

@@ -154,7 +154,11 @@ def run_echo(args: argparse.Namespace) -> int:
     lock = threading.Lock()
     problems: list[str] = []
 
-    with Node(args.node_name or "_robotmodel_topic_echo", args.namespace, connect=args.connect) as node:
+    from robotmodel.cli._ros_args import warn_ignored_params
+
+    warn_ignored_params(args.ros, args.namespace, args.node_name or "_robotmodel_topic_echo")
+    with Node(args.node_name or "_robotmodel_topic_echo", args.namespace, connect=args.connect,
+              remappings=args.ros.remaps) as node:
         topic = node.resolve_topic_name(args.topic_name)
         typename = args.message_type
         if typename is None:

@@ -75,7 +75,10 @@ def run(args: argparse.Namespace) -> int:
 
         buffer = Buffer()
         # /tf and /tf_static are absolute: the namespace names the node only, as in ROS.
-        with Node(args.node_name or _NODE, args.namespace, connect=args.connect) as node, \
+        from robotmodel.cli._ros_args import warn_ignored_params
+
+        warn_ignored_params(args.ros, args.namespace, args.node_name or _NODE)
+        with Node(args.node_name or _NODE, args.namespace, connect=args.connect, remappings=args.ros.remaps) as node, \
                 TransformListener(buffer, node):
             ros_log("INFO", _NODE, f"Listening to tf data for {args.wait_time} seconds...")
             stop.wait(args.wait_time)

@@ -64,7 +64,9 @@ def test_ros_args_block_ends_at_double_dash_and_leaves_xacro_arguments_alone():
 
 
 def test_take_ros_args_directly():
-    assert take_ros_args(["a", "--ros-args", "-r", "chatter:=/x", "--", "b"]) == (RosArgs(), ["a", "b"])
+    # A topic rule is kept for the node (it used to be dropped: the tool listened on the wrong topic).
+    assert take_ros_args(["a", "--ros-args", "-r", "chatter:=/x", "--", "b"]) == (RosArgs(remaps=("chatter:=/x",)),
+                                                                               ["a", "b"])
     assert take_ros_args(["--ros-args", "-r", "__ns:=/q/r"]) == (RosArgs("/q/r"), [])
     with pytest.raises(RosArgsError, match=r"^Couldn't parse trailing --remap flag\. No remap rule found\.$"):
         take_ros_args(["--ros-args", "--remap"])
