@@ -9,12 +9,13 @@
   :class:`robotmodel.bus.Node` (``remappings=``), so /tf, /tf_static, joint_states and
   robot_description all follow them. A malformed rule stops the command with rcl's text.
 - ``-p``/``--param [node:]name:=value`` and ``--params-file FILE``: parameter overrides, typed
-  and merged as rcl and rclcpp do (:mod:`robotmodel.cli._ros_params`): the value given last
-  on the command line wins. robot-state-publisher and joint-state-publisher map them onto
+  and merged as rcl and rclcpp do (:mod:`robotmodel.cli._ros_params`: within one node pattern
+  the value given last wins). robot-state-publisher and joint-state-publisher map them onto
   their settings (the parameter wins over the same setting's ``--flag``, as ``__ns`` wins
   over ``--namespace``); other commands say which overrides they ignore.
 - ``--log-level``, ``--enclave``, ``--log-config-file``, ``--log-file-name`` and rcl's
-  ``--enable-*``/``--disable-*`` flags are accepted and have no effect here.
+  ``--enable-*``/``--disable-*`` flags are accepted and have no effect here. Any other word
+  inside a block is refused, as rclcpp refuses unknown ROS arguments.
 - ``--namespace NS``: the namespace a node is created with in code (rclpy's
   ``Node(namespace=...)``): ``r1`` means ``/r1``. An ``__ns`` remap overrides it, as in ROS.
 
@@ -50,6 +51,9 @@ _VALUE_FLAGS = frozenset({"-p", "--param", "--params-file", "-e", "--enclave", "
                           "--log-config-file", "--log-file-name"})
 _REMAP_FLAGS = ("-r", "--remap")
 _PARAM_FLAGS = ("-p", "--param")
+_SWITCHES = frozenset(f"--{on}-{what}-logs" for on in ("enable", "disable") for what in ("rosout", "stdout",
+                                                                                          "external-lib"))
+_SEVERITIES = frozenset({"UNSET", "DEBUG", "INFO", "WARN", "WARNING", "ERROR", "FATAL"})
 
 
 class RosArgsError(ValueError):
@@ -115,6 +119,7 @@ def take_ros_args(words: Sequence[str], node_name: str | None = None) -> tuple[R
     found: dict[str, str] = {}
     remaps: list[str] = []
     params: list[tuple[str, str, Any]] = []
+    unknown: list[str] = []
     inside = False
     i = 0
     while i < len(words):
@@ -126,6 +131,8 @@ def take_ros_args(words: Sequence[str], node_name: str | None = None) -> tuple[R
                 rest.append(word)
         elif word == "--":
             inside = False
+        elif word in _SWITCHES:
+            pass
         elif word in _REMAP_FLAGS or word in _VALUE_FLAGS:
             if i + 1 >= len(words):
                 raise RosArgsError(_trailing(word))
@@ -136,8 +143,16 @@ def take_ros_args(words: Sequence[str], node_name: str | None = None) -> tuple[R
                 params.append(rule_entry(word, value))
             elif word == "--params-file":
                 params.extend(file_entries(word, value))
+            elif word == "--log-level" and value.rpartition(":=")[2].upper() not in _SEVERITIES:
+                raise RosArgsError(f"Couldn't parse log level: '{word} {value}'. Error: Argument does not use a "
+                                   "valid severity level")
             i += 1
+        else:
+            unknown.append(word)
         i += 1
+    if unknown:
+        # rclcpp refuses them (UnknownROSArgsError): '__ns:=/r1' without its -r would otherwise do nothing.
+        raise RosArgsError("found unknown ROS arguments: '" + "', '".join(unknown) + "'")
     return RosArgs(found.get("namespace"), found.get("node_name"), tuple(remaps), tuple(params)), rest
 
 
@@ -228,7 +243,7 @@ def add_node_arguments(parser: argparse.ArgumentParser, node_name: str) -> None:
     parser.epilog = ((parser.epilog or "") + " ROS 2 arguments (--ros-args ... [--]) may follow: -r FROM:=TO "
                      "remaps a topic of this node (-r joint_states:=/arm/joint_states, -r /tf:=/r1/tf), "
                      "-r __ns:=/NS and -r __node:=NAME move and rename it, -p NAME:=VALUE and "
-                     "--params-file FILE set parameters (the last given wins).").strip()
+                     "--params-file FILE set parameters (merged as rclcpp merges them).").strip()
 
 
 def settle(parsed: argparse.Namespace, ros: RosArgs) -> None:

@@ -5,10 +5,13 @@
   anything quoted a string; ``[a, b]`` is an array whose items share one type.
 - A params file maps node names (``robot_state_publisher:``, ``/r1/rsp:``, ``/**:``) to
   ``ros__parameters:``; nested keys flatten with dots (``zeros: {j1: 0.5}`` is ``zeros.j1``).
-- Every override is kept in command-line order under its node pattern (``-p`` without a
-  ``node:`` prefix means ``/**``); a node takes, in that order, the entries whose pattern
-  matches its fully qualified name, so the value given last on the command line wins, as
-  rclcpp merges them.
+- Every override goes into the table of its node pattern (``-p`` without a ``node:`` prefix
+  means ``/**``), a later value replacing an earlier one in place; a node then applies, in
+  order of each table's first appearance, the tables whose pattern matches its fully
+  qualified name, as rclcpp does. So ``--params-file F -p rate:=20`` gives 20 when F sets
+  ``rate`` under ``/**`` or has no ``rate`` after a ``/**`` section, but F's own
+  ``joint_state_publisher:`` entry beats a ``-p`` that came before that table appeared
+  (``-p joint_state_publisher:rate:=20`` always lands in the node's own table).
 
 Commands then read their settings with :func:`typed`, which refuses a wrong type with
 rclcpp's text, and :func:`warn_unused` names the overrides they have no use for.
