@@ -1,12 +1,15 @@
 """Zenoh session and router configurations: rmw_zenoh's settings, loopback-only by default.
 
-Topology with nothing started by hand: every session is a peer with multicast scouting
-off and gossip on. Sessions meet at a well-known loopback port (7447, where rmw_zenoh's
-router listens; ``ROBOTMODEL_ZENOH_PORT`` changes it): the first session binds it, later
-ones find it taken and connect to it (a router there, ours or ``rmw_zenohd``, is met the
-same way). Each session also listens on an ephemeral loopback port so gossip links the
-peers directly; they keep talking when the first one exits, and they reconnect (retry
-every 100 ms, backing off to 1 s) to whoever binds the port next.
+Topology with nothing started by hand: sessions have multicast scouting off and gossip
+on, and meet at a well-known loopback port (7447, where rmw_zenoh's router listens;
+``ROBOTMODEL_ZENOH_PORT`` changes it). The first session binds it in router mode, standing
+in for ``rmw_zenohd``: rmw_zenoh's sessions send their gossip to routers only, so behind a
+peer there they would never learn each other's endpoints, nor ours, and a peer forwards
+nothing for others. Later sessions find the port taken and connect to it as peers (a
+router there, ours or ``rmw_zenohd``, is met the same way). Each session also listens on
+an ephemeral loopback port so gossip links the peers directly; they keep talking when the
+first one exits, and they reconnect (retry every 100 ms, backing off to 1 s) to whoever
+binds the port next.
 
 Environment, as rmw_zenoh: ``ZENOH_SESSION_CONFIG_URI`` / ``ZENOH_ROUTER_CONFIG_URI`` name
 a zenoh JSON5 config file used instead of these defaults, and ``ZENOH_CONFIG_OVERRIDE``
@@ -127,11 +130,17 @@ def user_session_config(connect: Sequence[str] = ()) -> zenoh.Config | None:
     return apply_override(config)
 
 
-def session_config(listen: Sequence[str], connect: Sequence[str]) -> zenoh.Config:
-    """A peer session config with explicit endpoints (never zenoh's all-interfaces default)."""
+def session_config(listen: Sequence[str], connect: Sequence[str], mode: str = "peer") -> zenoh.Config:
+    """A session config with explicit endpoints (never zenoh's all-interfaces default).
+
+    ``mode`` is "peer", or "router" for the session that holds the well-known port.
+    """
     import zenoh
 
-    config = _common(zenoh.Config(), "peer")
+    config = _common(zenoh.Config(), mode)
+    if mode == "router":
+        # As rmw_zenohd: forward between peers behind it that have no link of their own yet.
+        _insert(config, "routing/router/peers_failover_brokering", "true")
     _insert(config, "listen/endpoints", json.dumps(_check_endpoints(listen)))
     _insert(config, "connect/endpoints", json.dumps(_check_endpoints(connect)))
     _insert(config, "connect/retry", _RETRY)

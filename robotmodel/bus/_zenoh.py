@@ -51,8 +51,9 @@ def open_session(connect: Sequence[str] = ()) -> zenoh.Session:
             return _linked(zenoh.open(session_config([LOOPBACK_ANY_PORT], connect)), connect)
         rendezvous = rendezvous_endpoint()
         try:
-            # First on the machine: hold the well-known port for those who come later.
-            return zenoh.open(session_config([rendezvous, LOOPBACK_ANY_PORT], []))
+            # First on the machine: hold the well-known port for those who come later, as
+            # a router (see robotmodel.bus._config for why rmw_zenoh's nodes need one).
+            return zenoh.open(session_config([rendezvous, LOOPBACK_ANY_PORT], [], mode="router"))
         except zenoh.ZError:
             # Taken (a router, or a peer that came first): meet there.
             return _linked(zenoh.open(session_config([LOOPBACK_ANY_PORT], [rendezvous])), [rendezvous])

@@ -299,3 +299,62 @@ def test_node_list_counts_nodes_as_rmw_zenohs_graph_cache(bus_env: dict[str, str
                 h.undeclare()
         finally:
             other.close()
+
+
+def rmw_zenoh_session(port: int) -> zenoh.Session:
+    """A session with DEFAULT_RMW_ZENOH_SESSION_CONFIG's settings, its router port made ``port``."""
+    config = zenoh.Config()
+    for key, value in {
+        "mode": '"peer"',
+        "connect/endpoints": json.dumps([f"tcp/localhost:{port}"]),
+        "listen/endpoints": '["tcp/localhost:0"]',
+        "scouting/multicast/enabled": "false",
+        "scouting/gossip/enabled": "true",
+        "scouting/gossip/multihop": "false",
+        "scouting/gossip/target": '{router: ["router", "peer"], peer: ["router"]}',
+        "scouting/gossip/autoconnect": '{router: [], peer: ["router", "peer"]}',
+        "scouting/gossip/autoconnect_strategy": '{peer: {to_router: "always", to_peer: "greater-zid"}}',
+        "timestamping/enabled": "{router: true, peer: true, client: true}",
+        "queries_default_timeout": "60000",
+        "transport/link/tx/lease": "60000",
+        "transport/link/tx/keep_alive": "2",
+        "transport/shared_memory/enabled": "false",
+    }.items():
+        config.insert_json5(key, value)
+    return zenoh.open(config)
+
+
+def test_rmw_zenoh_sessions_meet_ours_without_a_router(bus_env: dict[str, str]) -> None:
+    # No rmw_zenohd: our first session holds the port rmw_zenoh's sessions connect to.
+    # rmw_zenoh's sessions gossip their endpoints to routers only, and peers forward
+    # nothing for others, so unless that first session is a router as rmw_zenohd is, they
+    # never link with each other or with our later sessions, and their samples are lost.
+    domain = int(bus_env["ROS_DOMAIN_ID"])
+    port = int(bus_env["ROBOTMODEL_ZENOH_PORT"])
+    key = f"{domain}/chatter/std_msgs::msg::dds_::String_/{STRING_HASH}"
+    payload = b"\x00\x01\x00\x00" + struct.pack("<I", 3) + b"hi\x00"
+    got_b: list[bytes] = []
+    got_viewer: list[str] = []
+    with Node("robot"), Node("viewer") as viewer:
+        viewer.create_subscription("std_msgs/msg/String", "/chatter", lambda m: got_viewer.append(m.data))
+        a = rmw_zenoh_session(port)
+        b = rmw_zenoh_session(port)
+        try:
+            b.declare_subscriber(key, lambda s: got_b.append(s.payload.to_bytes()))
+            pub = a.declare_publisher(key)
+            end = time.monotonic() + 10
+            while time.monotonic() < end and not (got_b and got_viewer):
+                pub.put(payload, attachment=struct.pack("<qqB", 1, time.time_ns(), 16) + GID)
+                time.sleep(0.05)
+            assert got_b, "one rmw_zenoh session did not reach another"
+            assert got_viewer == ["hi"] * len(got_viewer) and got_viewer, "our second session got nothing"
+            # ros2 node list's view from their side (once gossip has linked them to us).
+            seen: list[str] = []
+            end = time.monotonic() + 10
+            while viewer.entity.keyexpr not in seen and time.monotonic() < end:
+                seen = [str(r.ok.key_expr) for r in a.liveliness().get(f"@ros2_lv/{domain}/**", timeout=2)
+                        if r.ok is not None]
+            assert viewer.entity.keyexpr in seen
+        finally:
+            a.close()
+            b.close()
