@@ -82,9 +82,10 @@ class Liveliness(IntEnum):
 class QoS:
     """A QoS profile in rclpy's terms (``QoS(10)`` is keep-last 10, reliable, volatile).
 
-    ``block`` is local to our publishers and never on the wire: when True a reliable
-    publisher waits for the network instead of dropping (zenoh's congestion control
-    BLOCK); when None it follows rmw_zenoh (BLOCK only for reliable + keep-all).
+    ``block`` is ours, not rmw's, and not in the token: when True a reliable publisher
+    waits for the network instead of dropping (zenoh's congestion control BLOCK); when
+    None, the default and what every preset uses, it follows rmw_zenoh (BLOCK only for
+    reliable + keep-all).
     Durations are integer nanoseconds; ``DURATION_INFINITE_NS`` means none, and 0 is rclpy's
     unspecified ``Duration()``, which :meth:`resolved` makes infinite as rmw_zenoh does.
     """
@@ -139,15 +140,15 @@ class QoS:
 
 # rclpy's common choice, QoS(10).
 QOS_DEFAULT = QoS(10)
-# tf2_ros DynamicBroadcasterQoS / DynamicListenerQoS: depth 100. ``block`` keeps bursts of
-# transforms from being dropped when a listener is momentarily slow.
-QOS_TF = QoS(100, block=True)
+# tf2_ros DynamicBroadcasterQoS / DynamicListenerQoS: depth 100. Keep-last, so rmw_zenoh
+# sends it with congestion control DROP; so do we.
+QOS_TF = QoS(100)
 # tf2_ros StaticBroadcasterQoS: depth 1, transient local.
-QOS_TF_STATIC = QoS(1, durability=Durability.TRANSIENT_LOCAL, block=True)
+QOS_TF_STATIC = QoS(1, durability=Durability.TRANSIENT_LOCAL)
 # tf2_ros StaticListenerQoS: depth 100, transient local.
 QOS_TF_STATIC_LISTENER = QoS(100, durability=Durability.TRANSIENT_LOCAL)
 # robot_state_publisher's /robot_description: depth 1, transient local, reliable.
-QOS_LATCHED = QoS(1, durability=Durability.TRANSIENT_LOCAL, block=True)
+QOS_LATCHED = QoS(1, durability=Durability.TRANSIENT_LOCAL)
 
 _BASE = QoS(DEFAULT_DEPTH, Reliability.RELIABLE, Durability.VOLATILE, History.KEEP_LAST)
 _NS = 1_000_000_000

@@ -23,7 +23,7 @@ import time
 from collections import Counter
 from collections.abc import Callable
 
-from robotmodel.bus import QOS_TF, QOS_TF_STATIC, QOS_TF_STATIC_LISTENER, Node
+from robotmodel.bus import QOS_TF, QOS_TF_STATIC, QOS_TF_STATIC_LISTENER, History, Node, QoS
 from robotmodel.msgs import TFMessage, make_transform
 
 _SAY = threading.Lock()
@@ -58,7 +58,9 @@ def main(argv: list[str]) -> int:
             wait_forever()
         elif role == "tf-pub":
             ident, count = argv[1], int(argv[2])
-            pub = node.create_publisher(TFMessage, "/tf", QOS_TF)
+            # Reliable + keep-all: rmw_zenoh's one profile that blocks instead of dropping
+            # when the network is full, which a flood that must lose nothing needs.
+            pub = node.create_publisher(TFMessage, "/tf", QoS(100, history=History.KEEP_ALL))
             end = time.monotonic() + 30
             # The listener's token (graph) and its subscriber (routing) both known here.
             if not pub.wait_for_subscriptions(1, timeout=30.0) or not wait_until(pub.matched, end):

@@ -29,11 +29,15 @@ import json
 import struct
 import threading
 import time
+from typing import Any
 
 import pytest
 import zenoh
 
 from robotmodel.bus import (
+    QOS_LATCHED,
+    QOS_TF,
+    QOS_TF_STATIC,
     Attachment,
     BusError,
     Entity,
@@ -358,3 +362,21 @@ def test_rmw_zenoh_sessions_meet_ours_without_a_router(bus_env: dict[str, str]) 
         finally:
             a.close()
             b.close()
+
+
+# --- congestion control -------------------------------------------------------------------
+
+def test_congestion_control_as_rmw_zenoh_chooses_it(bus_env: dict[str, str]) -> None:
+    # rmw_zenoh: BLOCK only for reliable + keep-all, DROP otherwise, tf2_ros's and
+    # robot_state_publisher's keep-last profiles included.
+    for qos in (QOS_TF, QOS_TF_STATIC, QOS_LATCHED, QoS(10), QoS(0, history=History.KEEP_ALL,
+                                                               reliability=Reliability.BEST_EFFORT)):
+        assert not qos.blocks, qos
+    assert QoS(0, history=History.KEEP_ALL).blocks
+    with Node("talker") as node:
+        tf = node.create_publisher("tf2_msgs/msg/TFMessage", "/tf", QOS_TF)
+        every = node.create_publisher("std_msgs/msg/String", "/log", QoS(0, history=History.KEEP_ALL))
+        raw: Any = tf._pub
+        assert raw._pub.congestion_control == zenoh.CongestionControl.DROP
+        raw = every._pub
+        assert raw._pub.congestion_control == zenoh.CongestionControl.BLOCK
