@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import itertools
 import logging
-import os
 import threading
 import time
 from collections.abc import Callable, Sequence
@@ -13,6 +12,7 @@ from typing import Any, Generic, NamedTuple, TypeVar
 from robotmodel.bus._attachment import Attachment, AttachmentWriter, is_attachment
 from robotmodel.bus._backend import Backend, Handle, RawPublisher, RawSample
 from robotmodel.bus._codec import Codec, codec_for
+from robotmodel.bus._domain import default_domain_id
 from robotmodel.bus._graph import Graph
 from robotmodel.bus._names import (
     Entity,
@@ -32,16 +32,6 @@ __all__ = ["Context", "Node", "Publisher", "RawMessage", "Subscription", "defaul
 log = logging.getLogger("robotmodel.bus")
 M = TypeVar("M")
 QoSLike = QoS | int
-
-
-def default_domain_id() -> int:
-    """``ROS_DOMAIN_ID`` from the environment, 0 when unset or empty (as ROS 2)."""
-    text = os.environ.get("ROS_DOMAIN_ID", "").strip()
-    if not text:
-        return 0
-    if not text.isdigit():
-        raise BusError(f"ROS_DOMAIN_ID must be a non-negative integer, got '{text}'")
-    return int(text)
 
 
 def _qos(qos: QoSLike) -> QoS:

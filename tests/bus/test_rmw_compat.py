@@ -44,6 +44,7 @@ from robotmodel.bus import (
     Node,
     QoS,
     RawMessage,
+    default_domain_id,
     gid_of,
     qos_from_keyexpr,
     qos_to_keyexpr,
@@ -380,3 +381,34 @@ def test_congestion_control_as_rmw_zenoh_chooses_it(bus_env: dict[str, str]) -> 
         assert raw._pub.congestion_control == zenoh.CongestionControl.DROP
         raw = every._pub
         assert raw._pub.congestion_control == zenoh.CongestionControl.BLOCK
+
+
+# --- the domain id ------------------------------------------------------------------------
+# rcl reads ROS_DOMAIN_ID with strtoul(text, &end, 0): leading blanks and a sign are
+# skipped, '0x' means hex and a leading '0' octal, digits are read as far as they go.
+# It fails with "ROS_DOMAIN_ID is not an integral number" only when that gives 0 with
+# text left over, and with "ROS_DOMAIN_ID is out of range" past 2**64 - 1; a negative
+# number wraps modulo 2**64. rcl and rmw_zenoh then take SIZE_MAX (rcl's "default
+# domain") as domain 0.
+
+@pytest.mark.parametrize(("text", "domain"), [
+    ("", 0), ("7", 7), (" \t7", 7), ("+7", 7), ("010", 8), ("0x2a", 42), ("0X2A", 42),
+    ("5abc", 5), ("0", 0), ("-1", 0), ("-2", 2**64 - 2), (str(2**64 - 1), 0),
+])
+def test_ros_domain_id_read_as_rcl_reads_it(monkeypatch: pytest.MonkeyPatch, text: str, domain: int) -> None:
+    monkeypatch.setenv("ROS_DOMAIN_ID", text)
+    assert default_domain_id() == domain
+
+
+@pytest.mark.parametrize(("text", "message"), [
+    ("abc", "ROS_DOMAIN_ID is not an integral number"),
+    ("08", "ROS_DOMAIN_ID is not an integral number"),   # octal: reads '0', then '8' is left
+    ("0x", "ROS_DOMAIN_ID is not an integral number"),
+    (" ", "ROS_DOMAIN_ID is not an integral number"),
+    (str(2**64), "ROS_DOMAIN_ID is out of range"),
+])
+def test_bad_ros_domain_id_fails_with_rcls_text(monkeypatch: pytest.MonkeyPatch, text: str, message: str) -> None:
+    monkeypatch.setenv("ROS_DOMAIN_ID", text)
+    with pytest.raises(BusError) as err:
+        default_domain_id()
+    assert str(err.value) == message
