@@ -8,6 +8,15 @@ from typing import Any
 from robotmodel.cli._common import add_mapping_arguments
 from robotmodel.cli._ros_args import add_node_arguments
 
+_PARAMS_HELP = (
+    "Parameters (--ros-args -p NAME:=VALUE or --params-file FILE): rate, "
+    "publish_default_positions, publish_default_velocities, publish_default_efforts, "
+    "use_mimic_tags, use_smallest_joint_limits (bool), source_list (a list: "
+    "source_list:=\"['/a/joint_states']\"), delta, zeros.JOINT (numbers; in a params file "
+    "'zeros: {j1: 0.5}'). A parameter wins over the same setting's --flag (zeros per joint); "
+    "dependent_joints and robot_description are reported and ignored, as joint_state_publisher "
+    "takes mimic joints from the URDF and the robot from FILE or the topic."
+)
 _NODE = "joint_state_publisher"
 _BOOLS = ("publish_default_positions", "publish_default_velocities", "publish_default_efforts", "use_mimic_tags",
           "use_smallest_joint_limits")
@@ -49,13 +58,6 @@ def register(sub: Any) -> None:
         "--zeros or a --source-list topic says otherwise; mimic joints follow their masters. Without FILE "
         "the robot comes from /robot_description, and every new description there is followed. "
         "Put FILE before --zeros/--source-list. Runs until Ctrl-C or SIGTERM.",
-        epilog="Parameters (--ros-args -p NAME:=VALUE or --params-file FILE): rate, "
-        "publish_default_positions, publish_default_velocities, publish_default_efforts, "
-        "use_mimic_tags, use_smallest_joint_limits (bool), source_list (a list: "
-        "source_list:=\"['/a/joint_states']\"), delta, zeros.JOINT (numbers; in a params file "
-        "'zeros: {j1: 0.5}'). A parameter wins over the same setting's --flag (zeros per joint); "
-        "dependent_joints and robot_description are reported and ignored, as joint_state_publisher "
-        "takes mimic joints from the URDF and the robot from FILE or the topic.",
     )
     add_mapping_arguments(parser)
     parser.add_argument("file", metavar="FILE", nargs="?", help="a .urdf or .xacro file (default: the "
@@ -72,6 +74,7 @@ def register(sub: Any) -> None:
     parser.add_argument("--connect", action="append", default=[], metavar="ENDPOINT",
                         help="zenoh endpoint to connect to (e.g. tcp/192.168.1.10:7447); repeatable")
     add_node_arguments(parser, _NODE)
+    parser.epilog = f"{parser.epilog} {_PARAMS_HELP}"
     parser.set_defaults(func=run)
 
 

@@ -8,6 +8,12 @@ from typing import Any
 from robotmodel.cli._common import add_model_arguments
 from robotmodel.cli._ros_args import add_node_arguments
 
+_PARAMS_HELP = (
+    "Parameters (--ros-args -p NAME:=VALUE or --params-file FILE), with ROS's types: "
+    "robot_description (string: the URDF itself; it replaces FILE), publish_frequency (double: "
+    "50.0, not 50), ignore_timestamp (bool), frame_prefix (string). A parameter wins over the "
+    "same setting's --flag; others are reported and ignored."
+)
 _NODE = "robot_state_publisher"
 _PARAMS = frozenset({"robot_description", "publish_frequency", "ignore_timestamp", "frame_prefix"})
 _WHY = {"use_sim_time": "there is no /clock here", "qos_overrides": "QoS overrides are not read here"}
@@ -21,10 +27,6 @@ def register(sub: Any) -> None:
         description="ROS 2's robot_state_publisher: publishes the robot's URDF on /robot_description and "
         "its fixed joints on /tf_static (both latched), and for each JointState on /joint_states the "
         "moving joints on /tf, stamped with the joint state's stamp. Runs until Ctrl-C or SIGTERM.",
-        epilog="Parameters (--ros-args -p NAME:=VALUE or --params-file FILE), with ROS's types: "
-        "robot_description (string: the URDF itself; it replaces FILE), publish_frequency (double: "
-        "50.0, not 50), ignore_timestamp (bool), frame_prefix (string). A parameter wins over the "
-        "same setting's --flag; others are reported and ignored.",
     )
     add_model_arguments(parser, file_optional=True,
                         file_help="a .urdf or .xacro file ('-' reads stdin); not needed with "
@@ -38,6 +40,7 @@ def register(sub: Any) -> None:
     parser.add_argument("--connect", action="append", default=[], metavar="ENDPOINT",
                         help="zenoh endpoint to connect to (e.g. tcp/192.168.1.10:7447); repeatable")
     add_node_arguments(parser, _NODE)
+    parser.epilog = f"{parser.epilog} {_PARAMS_HELP}"
     parser.set_defaults(func=run)
 
 
