@@ -49,6 +49,7 @@ from robotmodel.bus import (
     qos_from_keyexpr,
     qos_to_keyexpr,
     ros_type_name,
+    typestore,
 )
 from robotmodel.bus._attachment import is_attachment
 from robotmodel.bus._config import rendezvous_endpoint
@@ -412,3 +413,57 @@ def test_bad_ros_domain_id_fails_with_rcls_text(monkeypatch: pytest.MonkeyPatch,
     with pytest.raises(BusError) as err:
         default_domain_id()
     assert str(err.value) == message
+
+
+# --- latched topics -----------------------------------------------------------------------
+# rmw_zenoh's TRANSIENT_LOCAL: the publisher is a zenoh-ext AdvancedPublisher with a cache
+# of `depth` samples and publisher detection, plus sample-miss detection with a sporadic
+# 500 ms heartbeat when reliable; the subscription an AdvancedSubscriber with subscriber
+# detection, history (late-publisher detection, `depth` samples) and, when reliable,
+# heartbeat-driven recovery. Built here from those options, not from our backend.
+
+TF_HASH = "RIHS01_e369d0f05a23ae52508854b66f6aa0437f3449d652e8cbf22d5abe85d020f087"
+
+
+def test_latched_both_ways_with_rmw_zenohs_advanced_pub_sub(bus_env: dict[str, str]) -> None:
+    import zenoh.ext as zx
+
+    from robotmodel.bus import QOS_TF_STATIC_LISTENER
+    from robotmodel.msgs import TFMessage
+
+    domain = int(bus_env["ROS_DOMAIN_ID"])
+    port = int(bus_env["ROBOTMODEL_ZENOH_PORT"])
+    tf_static = f"{domain}/tf_static/tf2_msgs::msg::dds_::TFMessage_/{TF_HASH}"
+    description = f"{domain}/robot_description/std_msgs::msg::dds_::String_/{STRING_HASH}"
+    static_payload = bytes(typestore().serialize_cdr(
+        typestore().types["tf2_msgs/msg/TFMessage"](transforms=[]), "tf2_msgs/msg/TFMessage"))
+    got_static: list[Any] = []
+    got_description: list[zenoh.Sample] = []
+    with Node("robot") as node:
+        ros = rmw_zenoh_session(port)
+        try:
+            # Theirs first, ours late: a static broadcaster (reliable, depth 1).
+            theirs = zx.declare_advanced_publisher(
+                ros, tf_static, cache=zx.CacheConfig(1), publisher_detection=True,
+                sample_miss_detection=zx.MissDetectionConfig(sporadic_heartbeat=0.5),
+                congestion_control=zenoh.CongestionControl.DROP, reliability=zenoh.Reliability.RELIABLE)
+            theirs.put(static_payload, attachment=struct.pack("<qqB", 1, time.time_ns(), 16) + GID)
+            node.create_subscription(TFMessage, "/tf_static", got_static.append, QOS_TF_STATIC_LISTENER)
+            # Ours first, theirs late: robot_state_publisher's /robot_description.
+            pub = node.create_publisher("std_msgs/msg/String", "/robot_description", QOS_LATCHED)
+            pub.publish(typestore().types["std_msgs/msg/String"](data="<robot name='r'/>"))
+            zx.declare_advanced_subscriber(
+                ros, description, got_description.append, subscriber_detection=True,
+                history=zx.HistoryConfig(detect_late_publishers=True, max_samples=1),
+                recovery=zx.RecoveryConfig(heartbeat=True))
+            end = time.monotonic() + 15
+            while not (got_static and got_description) and time.monotonic() < end:
+                time.sleep(0.01)
+        finally:
+            ros.close()
+    assert got_static and got_static[0].transforms == []
+    assert got_description, "an rmw_zenoh-style late subscriber got nothing from our latched publisher"
+    sample = got_description[0]
+    att = sample.attachment.to_bytes() if sample.attachment is not None else b""
+    assert len(att) == 33 and att[16] == 16 and att[17:] == pub.gid
+    assert typestore().deserialize_cdr(sample.payload.to_bytes(), "std_msgs/msg/String").data == "<robot name='r'/>"
