@@ -79,6 +79,19 @@ def test_topic_echo_field(procs: Any) -> None:
     assert echo.lines[0] == "- header:"
 
 
+def test_topic_echo_with_a_type_discovers_the_latched_publisher_first(procs: Any) -> None:
+    # With the type given there is nothing to look up, but the QoS still follows the publishers:
+    # echoes started together, right after the publisher, each get its one latched message (they
+    # subscribed volatile whenever their new session's graph did not show the publisher yet).
+    procs.peer("static-pub").wait_line("ready")
+    echoes = [procs.cli("topic", "echo", "/tf_static", "tf2_msgs/msg/TFMessage", "--once", "--spin-time", "30",
+                        "--field", "transforms") for _ in range(4)]
+    for echo in echoes:
+        assert echo.wait_for(lambda ls: "---" in ls, 60), (echo.lines, echo.errors[-5:])
+        assert echo.popen.wait(30) == 0, echo.errors
+        assert echo.lines[0] == "- header:"
+
+
 def test_topic_echo_unknown_topic_says_what_ros2_says(procs: Any) -> None:
     echo = procs.cli("topic", "echo", "/nothing_here", "--spin-time", "0.3")
     assert echo.popen.wait(30) == 1
