@@ -119,13 +119,22 @@ def reach(root: str, n_links: int) -> None:
         node.create_subscription(TFMessage, "/tf", recorder("tf"), QOS_TF)
         node.create_subscription(TFMessage, "/tf_static", recorder("tf_static"), QOS_TF_STATIC_LISTENER)
         say({"ready": True})
-        while not stop.wait(0.05):
-            reachable = sorted(f for f in buffer.all_frame_names() if buffer.can_transform(root, f, Time()))
-            if len(reachable) >= n_links:
-                with lock:
-                    say({"reachable": reachable, "tf": sorted(seen["tf"]), "tf_static": sorted(seen["tf_static"])})
-                stop.wait()
+        reachable: list[str] = []
+        while len(reachable) < n_links:
+            if stop.wait(0.05):
                 return
+            reachable = sorted(f for f in buffer.all_frame_names() if buffer.can_transform(root, f, Time()))
+        # The listener's callback and ours run one after the other for each sample: let ours
+        # catch up with what the buffer got (every frame but the root came on one topic or the
+        # other) before reporting what each topic carried.
+        deadline = time.monotonic() + 10.0
+        while not stop.wait(0.01) and time.monotonic() < deadline:
+            with lock:
+                if set(reachable) - {root} <= seen["tf"] | seen["tf_static"]:
+                    break
+        with lock:
+            say({"reachable": reachable, "tf": sorted(seen["tf"]), "tf_static": sorted(seen["tf_static"])})
+        stop.wait()
 
 
 def late() -> None:
