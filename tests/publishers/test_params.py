@@ -209,3 +209,20 @@ def test_jsp_command_line_parameter_after_the_file_wins(live, urdf, tmp_path):
         assert states.wait(bool), jsp.err[-5:]
         assert list(states.items[0].position) == [0.5]
     assert jsp.stop() == 0
+
+
+def test_static_transform_publisher_and_tf2_echo_follow_remaps(live):
+    # Both parse their own words; the remap takes /tf_static to /r1/tf_static for each of them.
+    static = live.robotmodel("static-transform-publisher", "--x", "1.5", "--frame-id", "a", "--child-frame-id", "b",
+                             "--ros-args", "-r", "/tf_static:=/r1/tf_static", "-p", "use_sim_time:=true")
+    static.wait_line("Spinning until stopped", stream="err")
+    with Node("test_driver") as node:
+        got = Inbox(node, TFMessage, "/r1/tf_static", QOS_TF_STATIC_LISTENER)
+        assert got.wait(lambda m: bool(transforms(m)))
+        assert [(t.header.frame_id, t.child_frame_id, xyz(t)) for t in transforms(got.items)] == [
+            ("a", "b", (1.5, 0.0, 0.0))]
+        assert node.count_publishers("/tf_static") == 0
+    echo = live.robotmodel("tf2-echo", "a", "b", "--ros-args", "-r", "/tf_static:=/r1/tf_static")
+    echo.wait_line(r"^- Translation: \[1\.500, 0\.000, 0\.000\]$", timeout=30)
+    assert echo.stop() == 0 and static.stop() == 0
+    assert len([line for line in static.err if "use_sim_time" in line and "[WARN]" in line]) == 1
