@@ -243,7 +243,8 @@ def add_node_arguments(parser: argparse.ArgumentParser, node_name: str) -> None:
     parser.epilog = ((parser.epilog or "") + " ROS 2 arguments (--ros-args ... [--]) may follow: -r FROM:=TO "
                      "remaps a topic of this node (-r joint_states:=/arm/joint_states, -r /tf:=/r1/tf), "
                      "-r __ns:=/NS and -r __node:=NAME move and rename it, -p NAME:=VALUE and "
-                     "--params-file FILE set parameters (merged as rclcpp merges them).").strip()
+                     "--params-file FILE set parameters (merged as rclcpp merges them; one this "
+                     "command has no use for is named in a warning).").strip()
 
 
 def settle(parsed: argparse.Namespace, ros: RosArgs) -> None:
