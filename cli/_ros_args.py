@@ -26,7 +26,6 @@ absolute ones such as ``/tf`` do not, unless a remap rule says so.
 from __future__ import annotations
 
 import argparse
-import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -45,7 +44,6 @@ __all__ = [
     "warn_ignored_params",
 ]
 
-_TOKEN = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 # rcl flags whose value is the next word (so that value is never read as a flag).
 _VALUE_FLAGS = frozenset({"-p", "--param", "--params-file", "-e", "--enclave", "--log-level",
                           "--log-config-file", "--log-file-name"})
