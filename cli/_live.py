@@ -136,8 +136,12 @@ def _matrix(t: Any) -> Any:
 
 
 def serve_live(args: argparse.Namespace, desc: Any, initial: dict[str, float], frames: Any,
-               *, publish: bool = False) -> int:
-    """Serve the viewer until SIGINT/SIGTERM; ``desc=None`` takes the robot from the bus."""
+               *, publish: bool = False, jsp_options: dict[str, Any] | None = None) -> int:
+    """Serve the viewer until SIGINT/SIGTERM; ``desc=None`` takes the robot from the bus.
+
+    ``jsp_options`` are the publishing JointStatePublisher's settings from the ROS parameters
+    (the caller has read them); without them every parameter override is named as ignored.
+    """
     from robotmodel.cli._bus_args import stop_on_signals
     from robotmodel.cli.view_cmd import make_viewer
 
@@ -153,7 +157,7 @@ def serve_live(args: argparse.Namespace, desc: Any, initial: dict[str, float], f
 
             # Relative robot_description and joint_states: under --namespace, as rviz's displays resolve them.
             ros = getattr(args, "ros", None)
-            if ros is not None:
+            if ros is not None and jsp_options is None:
                 from robotmodel.cli._ros_args import warn_ignored_params
 
                 warn_ignored_params(ros, args.namespace, getattr(args, "node_name", None) or "robotmodel_view")
@@ -175,7 +179,7 @@ def serve_live(args: argparse.Namespace, desc: Any, initial: dict[str, float], f
         if publish:
             from robotmodel.publishers import JointStatePublisher
 
-            jsp = JointStatePublisher(desc, bus=node, zeros=viewer.positions)
+            jsp = JointStatePublisher(desc, bus=node, zeros=viewer.positions, **(jsp_options or {}))
             closers.insert(0, jsp)
             # Read per move: a new robot_description changes both robots' joints.
             viewer.on_joints(lambda _all: jsp.set({k: v for k, v in viewer.positions.items()

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
 from robotmodel.cli._common import add_mapping_arguments
@@ -78,19 +79,22 @@ def register(sub: Any) -> None:
     parser.set_defaults(func=run)
 
 
-def _settings(args: argparse.Namespace, name: str, log: Any) -> dict[str, Any]:
-    """The publisher's keyword settings: the flags, then the node's parameter overrides over them."""
-    from robotmodel.cli._ros_args import RosArgsError, node_params
+def jsp_settings(values: Mapping[str, Any], warn: Callable[[str], None], *, rate: float = 10.0,
+                 zeros: Mapping[str, float] | None = None, source_list: Sequence[str] = ()) -> dict[str, Any]:
+    """JointStatePublisher's keyword settings: the given ones, then the parameter overrides ``values`` over them.
+
+    Raises RosArgsError (rclcpp's text) for a wrong type; ``warn`` hears of the overrides not used.
+    """
+    from robotmodel.cli._ros_args import RosArgsError
     from robotmodel.cli._ros_params import typed, warn_unused
 
-    values = node_params(args.ros, args.namespace, name)
     # joint_state_publisher declares its parameters from the overrides (rclpy), so a number is a number.
-    rate = typed(values, "rate", "integer", "double")
-    if rate is not None:
-        if not (isinstance(rate, (int, float)) and rate > 0):
-            raise RosArgsError(f"rate must be a positive number of Hz, got '{rate}'")
-        args.rate = float(rate)
-    settings: dict[str, Any] = {"rate": args.rate, "zeros": dict(args.zeros), "source_list": list(args.source_list)}
+    given = typed(values, "rate", "integer", "double")
+    if given is not None:
+        if not (isinstance(given, (int, float)) and given > 0):
+            raise RosArgsError(f"rate must be a positive number of Hz, got '{given}'")
+        rate = float(given)
+    settings: dict[str, Any] = {"rate": rate, "zeros": dict(zeros or {}), "source_list": list(source_list)}
     for flag in _BOOLS:
         value = typed(values, flag, "bool")
         if value is not None:
@@ -106,7 +110,7 @@ def _settings(args: argparse.Namespace, name: str, log: Any) -> dict[str, Any]:
         if isinstance(zero, (int, float)):
             settings["zeros"][param.removeprefix("zeros.")] = float(zero)
     warn_unused(values, lambda n: n in _BOOLS or n in ("rate", "delta", "source_list") or n.startswith("zeros."),
-                log.warning, _WHY)
+                warn, _WHY)
     return settings
 
 
@@ -117,7 +121,7 @@ def run(args: argparse.Namespace) -> int:
     from robotmodel.cli._bus_args import stop_on_signals
     from robotmodel.cli._common import load_description
     from robotmodel.cli._publisher_log import ros_console
-    from robotmodel.cli._ros_args import RosArgsError, logger_name
+    from robotmodel.cli._ros_args import RosArgsError, logger_name, node_params
 
     from robotmodel.bus import Node
     from robotmodel.publishers import JointStatePublisher
@@ -125,7 +129,8 @@ def run(args: argparse.Namespace) -> int:
     name = args.node_name or _NODE
     log = ros_console(logger_name(args.namespace, name))
     try:
-        settings = _settings(args, name, log)
+        settings = jsp_settings(node_params(args.ros, args.namespace, name), log.warning, rate=args.rate,
+                                zeros=dict(args.zeros), source_list=args.source_list)
     except RosArgsError as exc:
         print(f"robotmodel joint-state-publisher: error: {exc}", file=sys.stderr)
         return 2

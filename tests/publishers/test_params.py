@@ -226,3 +226,18 @@ def test_static_transform_publisher_and_tf2_echo_follow_remaps(live):
     echo.wait_line(r"^- Translation: \[1\.500, 0\.000, 0\.000\]$", timeout=30)
     assert echo.stop() == 0 and static.stop() == 0
     assert len([line for line in static.err if "use_sim_time" in line and "[WARN]" in line]) == 1
+
+
+def test_jsp_gui_takes_joint_state_publishers_parameters(live, urdf):
+    gui = live.robotmodel("joint-state-publisher-gui", str(urdf), "--joint", "hinge=0.1", "--port", "0",
+                          "--ros-args", "-p", "zeros.hinge:=0.3", "-p", "rate:=50", "-p", "publish_default_efforts:=true",
+                          "-r", "joint_states:=/g/joint_states", "-p", "robot_description:=x")
+    gui.wait_line(r"^http://127\.0\.0\.1:\d+/", timeout=60)
+    with Node("test_driver") as node:
+        states = Inbox(node, JointState, "/g/joint_states", 10)
+        assert states.wait(lambda m: len(m) >= 12), gui.err[-5:]
+        assert [(list(m.position), list(m.effort)) for m in states.items[:3]] == [([0.3], [0.0])] * 3
+        stamps = [m.header.stamp.sec * SEC + m.header.stamp.nanosec for m in states.items[:12]]
+        assert statistics.median(b - a for a, b in itertools.pairwise(stamps)) < 0.075 * SEC
+    assert gui.stop() == 0
+    assert len([line for line in gui.err if "'robot_description' is ignored" in line]) == 1
