@@ -159,7 +159,7 @@ def late() -> None:
         node.create_subscription(String, "/robot_description", on_description, QOS_LATCHED)
         node.create_subscription(TFMessage, "/tf_static", on_static, QOS_TF_STATIC_LISTENER)
         say({"ready": True})
-        if done.wait(20):
+        if done.wait(60):
             say(got)
         stop.wait()
 
