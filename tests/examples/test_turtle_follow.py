@@ -67,19 +67,24 @@ def test_turtle2_closes_in_on_turtle1(live):
             if gaps[-1] < 0.3 * start_gap:
                 break
         assert gaps[-1] < 0.3 * start_gap, gaps
-        # Stop the drivers; turtlesim halts each turtle 1 s after its last command.
+        # Stop the drivers; turtlesim halts each turtle 1 s after its last command, and its poses
+        # then say so (zero velocities). The broadcasters' /tf follows the poses one hop behind.
         assert follower.stop() == 0 and teleop.stop() == 0
-        still = time.monotonic() + 20
-        with lock:
-            seen = {n: (m.x, m.y, m.theta) for n, m in latest.items()}
-        while time.monotonic() < still:
-            time.sleep(0.5)
+
+        def standing() -> bool:
             with lock:
-                now = {n: (m.x, m.y, m.theta) for n, m in latest.items()}
-            if now == seen:
-                break
-            seen = now
-        time.sleep(0.3)
+                poses = {n: (m.x, m.y, m.linear_velocity, m.angular_velocity) for n, m in latest.items()}
+            if any(v != 0.0 or w != 0.0 for _x, _y, v, w in poses.values()):
+                return False
+            for name, (x, y, _v, _w) in poses.items():
+                t = buffer.lookup_transform("world", name, Time()).transform.translation
+                if abs(t.x - x) > 1e-6 or abs(t.y - y) > 1e-6:
+                    return False
+            return True
+
+        deadline = time.monotonic() + 30
+        while not standing() and time.monotonic() < deadline:
+            time.sleep(0.05)
         for name in ("turtle1", "turtle2"):
             with lock:
                 pose = latest[name]
