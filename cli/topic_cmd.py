@@ -69,23 +69,16 @@ def _hidden(name: str) -> bool:
     return any(token.startswith("_") for token in name.split("/"))
 
 
-def _discover(node: Any, spin_time: float, topic: str | None = None,
-              publishers: bool = False) -> list[tuple[str, list[str]]]:
-    """The graph after up to ``spin_time`` s of discovery.
+def _discover(node: Any, spin_time: float) -> list[tuple[str, list[str]]]:
+    """The graph after ``spin_time`` s of discovery.
 
-    Less once ``topic`` shows up (with ``publishers``: once it has a publisher).
+    The whole time, as ros2cli's direct node spins before it answers: a topic's publishers
+    (their types, their QoS) come in one by one, so the first sign of a topic is not all of it.
     """
-    from robotmodel.bus import EntityKind
-
     end = time.monotonic() + spin_time
-    while True:
-        found = node.get_topic_names_and_types()
-        if topic is not None and any(name == topic for name, _ in found) and (
-                not publishers or node.context.graph.endpoints(topic, EntityKind.PUBLISHER)):
-            return list(found)
-        if time.monotonic() >= end:
-            return list(found)
-        time.sleep(0.02)
+    node.get_topic_names_and_types()  # starts following the graph
+    time.sleep(max(0.0, end - time.monotonic()))
+    return list(node.get_topic_names_and_types())
 
 
 def run_list(args: argparse.Namespace) -> int:
@@ -168,10 +161,10 @@ def run_echo(args: argparse.Namespace) -> int:
               remappings=args.ros.remaps) as node:
         topic = node.resolve_topic_name(args.topic_name)
         typename = args.message_type
-        # Discovery first, type given or not (as ros2cli's direct node spins before it answers):
-        # the QoS follows the publishers, and a new session's graph does not show them yet, so
-        # an echo of a latched topic would subscribe volatile and miss the one latched message.
-        found = dict(_discover(node, args.spin_time, topic, publishers=True))
+        # Discovery first, type given or not: the QoS follows the publishers, and a new session's
+        # graph does not show them yet, so an echo of a latched topic would subscribe volatile
+        # and miss the one latched message.
+        found = dict(_discover(node, args.spin_time))
         if typename is None:
             if topic not in found:
                 print(f"WARNING: topic [{args.topic_name}] does not appear to be published yet", flush=True)

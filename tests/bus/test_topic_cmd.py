@@ -64,7 +64,8 @@ def test_topic_list_shows_the_latched_topic(procs: Any) -> None:
 
 def test_topic_echo_once_prints_ros2_yaml(procs: Any) -> None:
     procs.peer("static-pub").wait_line("ready")
-    echo = procs.cli("topic", "echo", "/tf_static", "--once")
+    # Discovery runs its whole --spin-time (0.5 s by default, as ros2's): enough for a loaded machine.
+    echo = procs.cli("topic", "echo", "/tf_static", "--once", "--spin-time", "3")
     assert echo.popen.wait(30) == 0, echo.errors
     echo.wait_for(lambda ls: "---" in ls, 2)
     assert "\n".join(echo.lines) + "\n" == STATIC_YAML
@@ -72,7 +73,7 @@ def test_topic_echo_once_prints_ros2_yaml(procs: Any) -> None:
 
 def test_topic_echo_field(procs: Any) -> None:
     procs.peer("static-pub").wait_line("ready")
-    echo = procs.cli("topic", "echo", "/tf_static", "tf2_msgs/msg/TFMessage", "--once",
+    echo = procs.cli("topic", "echo", "/tf_static", "tf2_msgs/msg/TFMessage", "--once", "--spin-time", "3",
                      "--field", "transforms")
     assert echo.popen.wait(30) == 0, echo.errors
     echo.wait_for(lambda ls: "---" in ls, 2)
@@ -84,7 +85,7 @@ def test_topic_echo_with_a_type_discovers_the_latched_publisher_first(procs: Any
     # echoes started together, right after the publisher, each get its one latched message (they
     # subscribed volatile whenever their new session's graph did not show the publisher yet).
     procs.peer("static-pub").wait_line("ready")
-    echoes = [procs.cli("topic", "echo", "/tf_static", "tf2_msgs/msg/TFMessage", "--once", "--spin-time", "30",
+    echoes = [procs.cli("topic", "echo", "/tf_static", "tf2_msgs/msg/TFMessage", "--once", "--spin-time", "3",
                         "--field", "transforms") for _ in range(4)]
     for echo in echoes:
         assert echo.wait_for(lambda ls: "---" in ls, 60), (echo.lines, echo.errors[-5:])
@@ -126,7 +127,8 @@ def test_topic_echo_refuses_a_topic_of_two_types(procs: Any) -> None:
     with Node("two_types") as node:
         node.create_publisher(store.types["std_msgs/msg/String"], "/mixed")
         node.create_publisher(store.types["sensor_msgs/msg/JointState"], "/mixed")
-        echo = procs.cli("topic", "echo", "/mixed")
+        # Both types must be seen: the first publisher's token alone once made echo subscribe to it.
+        echo = procs.cli("topic", "echo", "/mixed", "--spin-time", "3")
         assert echo.popen.wait(30) == 1
     echo.wait_for(bool, 2, stream="stderr")
     assert echo.errors == ["robotmodel topic: error: Cannot echo topic '/mixed', as it contains more than one type: "
