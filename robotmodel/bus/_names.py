@@ -134,6 +134,11 @@ def topic_keyexpr(domain_id: int, topic: str, typename: str, type_hash: str) -> 
     return f"{domain_id}/{topic.strip('/')}/{dds_type_name(typename)}/{type_hash}"
 
 
+def _id(text: str) -> int | str:
+    # A plain decimal (no sign, no leading zero) as a number; anything else kept as text.
+    return int(text) if text.isdecimal() and text.isascii() and str(int(text)) == text else text
+
+
 def gid_of(token: str) -> bytes:
     """rmw_zenoh's 16-byte GID of an entity: XXH3-128 of its token, low then high half, LE."""
     return xxhash.xxh3_128_intdigest(token.encode()).to_bytes(16, "little")
@@ -147,12 +152,14 @@ class Entity:
     ``topic`` is the fully qualified topic, ``typename`` the ROS type (``pkg/msg/Name``)
     and ``type_hash`` its RIHS01 text. ``token`` is the liveliness token an entity was read
     from (:meth:`parse`); its GID is the hash of that exact text, whoever wrote it.
+    Node and entity ids are numbers in ours and in rmw_zenoh's tokens, but rmw_zenoh takes
+    any non-empty text there, so a token's id that is not a plain decimal stays text.
     """
 
     domain_id: int
     zid: str
-    node_id: int
-    entity_id: int
+    node_id: int | str
+    entity_id: int | str
     kind: EntityKind
     namespace: str
     node_name: str
@@ -195,10 +202,10 @@ class Entity:
             raise BusError(f"not an rmw_zenoh liveliness token: '{token}'")
         try:
             kind = EntityKind(parts[5])
-            domain_id, node_id, entity_id = int(parts[1]), int(parts[3]), int(parts[4])
+            domain_id = int(parts[1])
         except ValueError as exc:
             raise BusError(f"not an rmw_zenoh liveliness token: '{token}'") from exc
-        base = cls(domain_id, parts[2], node_id, entity_id, kind, demangle(parts[7]), demangle(parts[8]),
+        base = cls(domain_id, parts[2], _id(parts[3]), _id(parts[4]), kind, demangle(parts[7]), demangle(parts[8]),
                    demangle(parts[6]), token=token)
         if kind is EntityKind.NODE:
             return base

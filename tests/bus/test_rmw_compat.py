@@ -116,6 +116,18 @@ def test_nested_namespace_enclave_and_topic_are_demangled() -> None:
     assert e.keyexpr == e.token
 
 
+def test_node_and_entity_ids_are_opaque_text_as_in_rmw_zenoh() -> None:
+    # rmw_zenoh keeps the session, node and entity ids of a token as text and only asks
+    # that they be non-empty; nodes are told apart by (session id, node id) text.
+    e = Entity.parse(token("MP", "::,7:,:,:,,", ids="n1/pub-a"))
+    assert (e.node_id, e.entity_id) == ("n1", "pub-a")
+    assert e.keyexpr == e.token
+    node = Entity.parse("@ros2_lv/0/abc/n1/n1/NN/%/%/talker")
+    assert node.node_id == "n1" and node.keyexpr == node.token
+    # Decimal ids read as numbers (ours are), so the two spellings name the same node.
+    assert Entity.parse(token("MP", "::,7:,:,:,,", ids="0/10")).node_id == 0
+
+
 @pytest.mark.parametrize(("text", "expected"), [
     # liveliness BEST_AVAILABLE (5) and UNKNOWN (4) are in rmw_zenoh's table.
     ("::,10:,:,:5,,", QoS(10, liveliness=Liveliness.BEST_AVAILABLE)),
