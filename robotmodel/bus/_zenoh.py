@@ -16,7 +16,7 @@ import logging
 import threading
 import time
 import weakref
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import Any
 
 import zenoh
@@ -39,6 +39,10 @@ log = logging.getLogger("robotmodel.bus")
 _HEARTBEAT_S = 0.5
 # How long opening waits for its first link before going on without it.
 _LINK_TIMEOUT_S = 2.0
+# zenoh-python runs each Python callback on a thread of its own, named so.
+_CALLBACK_THREAD = "(pyo3-closure)"
+# How long close() waits for those threads to end once the session let their callbacks go.
+_CALLBACK_JOIN_S = 5.0
 
 
 def open_session(connect: Sequence[str] = ()) -> zenoh.Session:
@@ -136,6 +140,7 @@ class ZenohBackend(Backend):
         self._zid = str(self._session.zid())
         self._lock = threading.Lock()
         self._handles: list[Handle] = []
+        self._callback_threads: list[threading.Thread] = []
         self.closed = False
         _LIVE.add(self)
 
@@ -153,6 +158,21 @@ class ZenohBackend(Backend):
         with self._lock:
             self._handles.append(handle)
         return handle
+
+    def _with_callback_thread(self, declare: Callable[[], Any]) -> Any:
+        """``declare()``, keeping the callback thread it starts, for :meth:`close` to wait for.
+
+        That thread inherits the daemon flag of the thread that declared: declared from a
+        daemon thread, it is not waited for at exit, and if it wakes (its callback let go by
+        the closed session) while the interpreter finalizes, CPython ends it by unwinding
+        through zenoh's Rust frames and the process aborts (SIGABRT).
+        """
+        before = set(threading.enumerate())
+        obj = declare()
+        started = [t for t in threading.enumerate() if t not in before and t.name.endswith(_CALLBACK_THREAD)]
+        with self._lock:
+            self._callback_threads.extend(started)
+        return obj
 
     def _forget(self, handle: Handle) -> None:
         with self._lock:
@@ -192,14 +212,14 @@ class ZenohBackend(Backend):
                                None if att is None else att.to_bytes()))
 
         if q.transient_local:
-            sub: Any = zx.declare_advanced_subscriber(
+            sub: Any = self._with_callback_thread(lambda: zx.declare_advanced_subscriber(
                 self._session, key, on_sample,
                 history=zx.HistoryConfig(detect_late_publishers=True, max_samples=q.depth),
                 recovery=zx.RecoveryConfig(periodic_queries=None, heartbeat=True)
                 if q.reliability == Reliability.RELIABLE else None,
-                subscriber_detection=True)
+                subscriber_detection=True))
         else:
-            sub = self._session.declare_subscriber(key, on_sample)
+            sub = self._with_callback_thread(lambda: self._session.declare_subscriber(key, on_sample))
         return self._track(_Undeclare(self, sub))
 
     def declare_token(self, key: str) -> Handle:
@@ -212,7 +232,8 @@ class ZenohBackend(Backend):
         def on_token(sample: zenoh.Sample) -> None:
             callback(str(sample.key_expr), sample.kind == zenoh.SampleKind.PUT)
 
-        sub = self._session.liveliness().declare_subscriber(pattern, on_token, history=True)
+        sub = self._with_callback_thread(
+            lambda: self._session.liveliness().declare_subscriber(pattern, on_token, history=True))
         return self._track(_Undeclare(self, sub))
 
     def get_tokens(self, pattern: str, timeout: float) -> list[str]:
@@ -233,4 +254,10 @@ class ZenohBackend(Backend):
             handle.close()
         with self._lock:
             self.closed = True
+            threads, self._callback_threads = self._callback_threads, []
         self._session.close()  # type: ignore[no-untyped-call]
+        # Their callbacks are let go now: wait for the threads to end (see _with_callback_thread).
+        deadline = time.monotonic() + _CALLBACK_JOIN_S
+        for thread in threads:
+            if thread is not threading.current_thread():
+                thread.join(max(0.0, deadline - time.monotonic()))
