@@ -5,7 +5,10 @@ with zenoh-ext's serializer: two little-endian int64, then the array as a sequen
 LEB128 length (one byte, 0x10) followed by the 16 bytes. 33 bytes in all.
 
 Reading, we do as rmw_zenoh's deserializer: the three fields are taken from the front and
-whatever follows them is not looked at, so a longer attachment is still read.
+whatever follows them is not looked at, so a longer attachment is still read. We also read
+the form rmw_zenoh Jazzy wrote before 0.2.4 (ros2/rmw_zenoh#601), each field behind its
+name as a zenoh-ext string: "sequence_number", int64, "source_timestamp", int64,
+"source_gid", the GID sequence; 77 bytes. We never write it.
 """
 
 from __future__ import annotations
@@ -22,11 +25,24 @@ ATTACHMENT_SIZE = _HEAD.size + 16
 _GID_LEN = 16
 _GID_LEN_OFFSET = 16
 _WHOLE = struct.Struct("<qqB16s")
+# The labelled form: LEB128 length + name before each field.
+_LABELLED = struct.Struct("<16sq17sq11sB16s")
+_LABELS = (b"\x0fsequence_number", b"\x10source_timestamp", b"\x0asource_gid")
+
+
+def _labelled(data: bytes) -> tuple[int, int, bytes] | None:
+    # Its first 16 bytes read as today's int64 sequence number would be ~8e18: no clash.
+    if len(data) < _LABELLED.size or not data.startswith(_LABELS[0]):
+        return None
+    seq_label, seq, stamp_label, stamp, gid_label, n, gid = _LABELLED.unpack_from(data)
+    if (seq_label, stamp_label, gid_label) != _LABELS or n != _GID_LEN:
+        return None
+    return seq, stamp, gid
 
 
 def is_attachment(data: bytes) -> bool:
     """Whether ``data`` starts with rmw_zenoh's attachment layout (the check on the hot path)."""
-    return len(data) >= ATTACHMENT_SIZE and data[_GID_LEN_OFFSET] == _GID_LEN
+    return (len(data) >= ATTACHMENT_SIZE and data[_GID_LEN_OFFSET] == _GID_LEN) or _labelled(data) is not None
 
 
 class AttachmentWriter:
@@ -60,7 +76,10 @@ class Attachment(NamedTuple):
 
     @classmethod
     def decode(cls, data: bytes) -> Attachment:
-        """Read the first 33 bytes; raises BusError when they are not an rmw_zenoh attachment."""
+        """Read the first 33 bytes (or the labelled form); raises BusError on anything else."""
+        old = _labelled(data)
+        if old is not None:
+            return cls(*old)
         if len(data) < ATTACHMENT_SIZE:
             raise BusError(f"attachment of {len(data)} bytes, expected at least {ATTACHMENT_SIZE}")
         seq, stamp, n = _HEAD.unpack_from(data)

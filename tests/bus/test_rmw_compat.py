@@ -192,6 +192,24 @@ def test_trailing_bytes_after_the_gid_are_ignored() -> None:
     assert Attachment.decode(att) == (3, 1_700_000_000_000_000_000, GID)
 
 
+def test_labelled_attachment_of_jazzy_before_0_2_4_is_read() -> None:
+    # rmw_zenoh Jazzy 0.2.0-0.2.3 (before ros2/rmw_zenoh#601) wrote each field behind its
+    # name, all with the zenoh-ext serializer: string (LEB128 length, bytes), int64 LE.
+    def text(s: bytes) -> bytes:
+        return bytes([len(s)]) + s
+
+    old = (text(b"sequence_number") + struct.pack("<q", 9) + text(b"source_timestamp") + struct.pack("<q", 11)
+           + text(b"source_gid") + b"\x10" + GID)
+    assert len(old) == 77
+    assert is_attachment(old)
+    assert Attachment.decode(old) == (9, 11, GID)
+    # Sequence number 16 puts 0x10 where today's form has its GID length: still labelled.
+    old16 = old.replace(struct.pack("<q", 9), struct.pack("<q", 16), 1)
+    assert Attachment.decode(old16) == (16, 11, GID)
+    # Written, we use only today's form.
+    assert len(Attachment(9, 11, GID).encode()) == 33
+
+
 @pytest.mark.parametrize("att", [
     b"",
     struct.pack("<qqB", 1, 2, 16) + GID[:15],           # GID cut short
