@@ -240,3 +240,19 @@ def test_wrong_type_is_rclcpps_text():
                                "{publish_frequency} is of type {double}, setting it to {integer} is not allowed.")
     assert typed({"rate": 20.5}, "rate", "integer", "double") == 20.5
     assert typed({}, "rate", "integer") is None
+
+
+def test_library_publishers_take_remappings_through_their_node_options():
+    from robotmodel.bus import QOS_TF, Context
+    from robotmodel.msgs import Header, JointState, TFMessage, stamp
+    from robotmodel.publishers import RobotStatePublisher
+
+    urdf = ('<robot name="r"><link name="a"/><link name="b"/><joint name="j" type="continuous">'
+            '<parent link="a"/><child link="b"/><axis xyz="0 0 1"/></joint></robot>')
+    with Context(backend="inprocess", domain_id=93) as ctx, Node("driver", context=ctx) as driver:
+        got: list[TFMessage] = []
+        driver.create_subscription(TFMessage, "/r1/tf", got.append, QOS_TF)
+        with RobotStatePublisher(urdf, context=ctx, remappings=["joint_states:=/arm/joint_states", "/tf:=/r1/tf"]):
+            pub = driver.create_publisher(JointState, "/arm/joint_states", 10)
+            pub.publish(JointState(header=Header(stamp=stamp(5_000_000_000)), name=["j"], position=[0.5]))
+        assert [(t.header.frame_id, t.child_frame_id) for m in got for t in m.transforms] == [("a", "b")]
