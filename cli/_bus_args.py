@@ -35,9 +35,9 @@ def split_connect(words: Sequence[str]) -> tuple[list[str], list[str]]:
 def strip_ros_args(words: Sequence[str]) -> list[str]:
     """The words without ROS's own arguments, as ``rclcpp::init_and_remove_ros_arguments`` leaves them.
 
-    Each ``--ros-args`` block runs to a ``--`` (dropped too) or to the end. ROS arguments
-    (remappings, parameters, log levels) have no meaning here; they are accepted and ignored
-    so that command lines written for ROS run unchanged.
+    Each ``--ros-args`` block runs to a ``--`` (dropped too) or to the end. The blocks are
+    dropped unread: the node commands read them with :mod:`robotmodel.cli._ros_args`
+    (remaps, parameters, namespace), which refuses what rcl refuses.
     """
     rest: list[str] = []
     inside = False
