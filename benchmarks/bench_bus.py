@@ -6,8 +6,8 @@
   one encode and one decode. Raw zenoh: the same payload bytes bounced with plain
   ``put``/subscriber callbacks on the same two sessions. Target p50 <= 0.3 ms.
 - Throughput: this process publishes N TFMessages (one transform each, each serialized)
-  as fast as it can on a reliable /tf publisher with congestion control BLOCK; the other
-  process decodes and counts them. Rate = N / (last receive - first send). Raw zenoh:
+  as fast as it can on a reliable keep-all publisher (rmw_zenoh blocks only for that
+  profile, so nothing is dropped); the other process decodes and counts them. Rate = N / (last receive - first send). Raw zenoh:
   the same count of same-size payloads with ``put`` (BLOCK) to a counting callback.
   Two bus receivers: TFMessage objects, and ``TFRecords`` (parent, child, stamp, pose
   tuples: what a TF listener inserts into its buffer). Targets >= 100k TF messages/s and
@@ -46,12 +46,20 @@ def _tf_message() -> Any:
 # ---------------------------------------------------------------- the other process
 
 
+def _flood_qos(qos: Any, history: Any) -> Any:
+    # Reliable keep-all is rmw_zenoh's one blocking profile (QOS_TF drops under overload, as
+    # upstream's keep-last does); the raw zenoh peer below blocks too, so both lose nothing.
+    return qos(0, history=history.KEEP_ALL)
+
+
 def child() -> int:
     """Echo pings back and count floods; driven by lines on stdin."""
     import zenoh
 
-    from robotmodel.bus import QOS_TF, Node, TFRecords
+    from robotmodel.bus import QOS_TF, History, Node, QoS, TFRecords
     from robotmodel.msgs import TFMessage
+
+    flood_qos = _flood_qos(QoS, History)
 
     node = Node("bench_echo")
     session = node.context.backend.session  # type: ignore[attr-defined]
@@ -69,8 +77,8 @@ def child() -> int:
             state["last"] = time.time_ns()
             done.set()
 
-    node.create_subscription(TFMessage, "/bench/flood", count, QOS_TF)
-    node.create_subscription(TFRecords, "/bench/flood_records", count, QOS_TF)
+    node.create_subscription(TFMessage, "/bench/flood", count, flood_qos)
+    node.create_subscription(TFRecords, "/bench/flood_records", count, flood_qos)
     session.declare_subscriber(f"{RAW_PREFIX}/flood", count)
     print("ready", flush=True)
     for line in sys.stdin:
@@ -132,8 +140,10 @@ def main() -> int:
 
     import zenoh
 
-    from robotmodel.bus import QOS_TF, Node, codec_for
+    from robotmodel.bus import QOS_TF, History, Node, QoS, codec_for
     from robotmodel.msgs import TFMessage
+
+    flood_qos = _flood_qos(QoS, History)
 
     node = Node("bench_driver")  # first: holds the private port
     proc = subprocess.Popen([sys.executable, __file__, "--child"], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
@@ -160,8 +170,8 @@ def main() -> int:
         bus = ping_pong(lambda: ping.publish(msg), got, PINGS)
         raw = ping_pong(lambda: raw_ping.put(payload), raw_got, PINGS)
 
-        flood_pub = node.create_publisher(TFMessage, "/bench/flood", QOS_TF)
-        records_pub = node.create_publisher(TFMessage, "/bench/flood_records", QOS_TF)
+        flood_pub = node.create_publisher(TFMessage, "/bench/flood", flood_qos)
+        records_pub = node.create_publisher(TFMessage, "/bench/flood_records", flood_qos)
         raw_flood = session.declare_publisher(f"{RAW_PREFIX}/flood", congestion_control=zenoh.CongestionControl.BLOCK)
         time.sleep(0.5)
         flood(proc, lambda: flood_pub.publish(msg), 2000)
