@@ -10,9 +10,15 @@
 
 Any other node is skipped with one line. ``robot_description`` is the node's own
 parameter, else (ROS 1) the nearest one up its namespace, as ``searchParam`` finds it; a
-xacro command becomes ``FILE name:=value ...`` so the command expands it itself. A node
-outside the root namespace gets it as launch_ros passes it: ``--ros-args -r __ns:=/ns`` at
-the end of its command line.
+xacro command becomes ``FILE name:=value ...`` so the command expands it itself.
+
+What ROS hands a node on its command line follows in one ``--ros-args`` block, as
+launch_ros writes it: ``-r __node:=NAME`` (a name the file gave, unless it is the
+command's own), ``-r __ns:=/NS`` (outside the root namespace), ``-p name:=value`` for each
+parameter not mapped onto a flag above, ``--params-file FILE`` for ROS 2's
+``<param from="FILE"/>`` (these two in the file's order), then the remap rules
+``-r from:=to`` in the order the node should try them. The command's own parameter
+mapping then decides, and names what it ignores.
 """
 
 from __future__ import annotations
@@ -27,6 +33,7 @@ import yaml
 from robotmodel.errors import LaunchError
 from robotmodel.launch._loader import LaunchFile, join_ns
 from robotmodel.launch._model import LaunchPlan, NodeDecl, Param, ProcessSpec
+from robotmodel.launch._rosargs import ros_tail
 
 __all__ = ["build_plan"]
 
@@ -51,7 +58,7 @@ def build_plan(launch: LaunchFile, workdir: Path, *, package_paths: Sequence[Pat
             if isinstance(spec, str):
                 plan.skipped.append(f"{label}: {spec}")
                 continue
-            plan.processes.append(_in_namespace(spec, node))
+            plan.processes.append(ros_tail(spec, node, mapper.consumed(node, key), plan.notes))
         else:
             plan.skipped.append(f"{label}: no robotmodel equivalent, not started")
     return plan
@@ -90,6 +97,18 @@ class _Mapper:
         return ProcessSpec(node.full_name, "joint_state_publisher_gui",
                            ("joint-state-publisher-gui", *description, *self._paths(), *joints, *self._page()),
                            node.required)
+
+    def consumed(self, node: NodeDecl, key: tuple[str, str]) -> frozenset[str]:
+        """The node's parameters this mapping turned into the command's words (the rest go as ``-p``)."""
+        if key in _RSP:
+            return frozenset({"robot_description", "publish_frequency", "frame_prefix", "ignore_timestamp"})
+        if key in _JSP | _JSP_GUI:
+            node = self._jsp_params(node)
+            names = {"robot_description", "use_gui", "zeros"} | {n for n in node.params if n.startswith("zeros.")}
+            if key in _JSP and not _flag(node, "use_gui"):
+                names |= {"rate", "source_list"}
+            return frozenset(names)
+        return frozenset()
 
     def _jsp_params(self, node: NodeDecl) -> NodeDecl:
         # ROS 1's joint_state_publisher reads each parameter as ~name, else as name in its
@@ -136,24 +155,6 @@ class _Mapper:
         # Leading blanks go: urdfdom's XML parser skips them, an XML declaration may not follow them here.
         path.write_text((param.value or "").lstrip(), encoding="utf-8")
         return (str(path),)
-
-
-def _in_namespace(spec: ProcessSpec, node: NodeDecl) -> ProcessSpec:
-    """The command with the node's namespace, passed as launch_ros passes it: ``--ros-args -r __ns:=/ns``.
-
-    Each command then resolves its relative topics (joint_states, robot_description) under
-    it, while /tf and /tf_static stay global, as with ROS's nodes.
-    """
-    if node.namespace == "/":
-        return spec
-    from robotmodel.bus._names import validate_namespace
-    from robotmodel.errors import BusError
-
-    try:
-        validate_namespace(node.namespace)
-    except BusError as exc:
-        raise LaunchError(f"{node.file}:{node.line}: node {node.name}: {exc}") from None
-    return replace(spec, argv=(*spec.argv, "--ros-args", "-r", f"__ns:={node.namespace}"))
 
 
 def _split(node: NodeDecl) -> list[str]:

@@ -6,23 +6,29 @@ Scoping follows each system:
   sees only the args passed to it (all of them with ``pass_all_args``), an arg declared
   with ``value`` cannot be set from outside, and an arg passed to an include that does
   not declare it is an error. Parameters outside nodes are global, under the group's
-  ``ns``; a node finds ``robot_description`` by searching up from its namespace.
+  ``ns``; a node finds ``robot_description`` by searching up from its namespace. A
+  ``<remap>`` outside a node applies to the nodes after it in its group or file and in the
+  files that file includes afterwards (:mod:`robotmodel.launch._remaps`).
 - ROS 2: ``<arg>`` and ``<let>`` set launch configurations; a ``<group>`` scopes them
   (unless ``scoped="false"``), an ``<include>`` does not, so its arguments stay set after
   it, as upstream does. Namespaces come from ``<push-ros-namespace>`` and the node's
-  ``namespace``. Parameters belong to nodes.
+  ``namespace``; ``<set_remap>`` rules are scoped the same way as configurations (a group
+  keeps its own, an include shares its includer's). Parameters belong to nodes, inline or
+  from a params file (``<param from="FILE"/>``).
 """
 
 from __future__ import annotations
 
+import os
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import yaml
 
 from robotmodel.errors import LaunchError
 from robotmodel.launch._model import Dialect, NodeDecl, Param
+from robotmodel.launch._remaps import Remap, ros1_add, ros1_for_node, ros1_problem
 from robotmodel.launch._subst import Sub, SubstContext, parse, parse_xacro_command, resolve, resolve_parts, truth
 from robotmodel.launch._xml import Element, parse_file, where
 
@@ -30,9 +36,10 @@ __all__ = ["LaunchFile", "detect_dialect", "join_ns", "load_launch_file"]
 
 _MAX_DEPTH = 32
 _IGNORED = frozenset({
-    "remap", "env", "machine", "set_env", "unset_env", "set_parameter", "set_remap", "set-env", "unset-env",
-    "set-parameter", "set-remap", "log", "timer",
+    "env", "machine", "set_env", "unset_env", "set_parameter", "set-env", "unset-env", "set-parameter", "log",
+    "timer",
 })
+_SET_REMAP = frozenset({"set_remap", "set-remap"})
 _ROS2_TAGS = frozenset({"let", "push-ros-namespace", "push_ros_namespace", "executable", "set_env", "set-env"})
 
 
@@ -55,6 +62,8 @@ class _Scope:
     declared: set[str]
     ns: str
     depth: int
+    #: Remap rules in force for the nodes that follow (ROS 1 <remap>, ROS 2 <set_remap>).
+    remaps: list[Remap] = field(default_factory=list)
 
 
 def join_ns(base: str, name: str) -> str:
@@ -149,6 +158,8 @@ class _Loader:
                 scope.ns = join_ns(scope.ns, self._req(scope, elem, "namespace"))
             elif tag == "node":
                 self._node(scope, elem)
+            elif tag == "remap" or (tag in _SET_REMAP and scope.dialect is Dialect.ROS2):
+                self._scope_remap(scope, elem)
             elif tag == "param":
                 self._global_param(scope, elem, scope.ns)
             elif tag == "rosparam":
@@ -218,14 +229,16 @@ class _Loader:
         if dialect is Dialect.ROS2:
             configs = scope.args if scope.dialect is Dialect.ROS2 else {}
             configs.update(given)
-            self._walk(root.children, _Scope(path, dialect, configs, given, set(), ns, scope.depth + 1))
+            # Not scoped: its <set_remap> rules stay in force after it, as its configurations do.
+            remaps = scope.remaps if scope.dialect is Dialect.ROS2 else list(scope.remaps)
+            self._walk(root.children, _Scope(path, dialect, configs, given, set(), ns, scope.depth + 1, remaps))
             return
         passed = {}
         pass_all = self._attr(scope, elem, "pass_all_args")
         if pass_all is not None and truth(pass_all, ctx, "pass_all_args"):
             passed = {k: v for k, v in scope.args.items() if v is not None}
         passed.update(given)
-        inner = _Scope(path, dialect, {}, passed, set(), ns, scope.depth + 1)
+        inner = _Scope(path, dialect, {}, passed, set(), ns, scope.depth + 1, list(scope.remaps))
         self._walk(root.children, inner)
         unused = sorted(set(given) - inner.declared)
         if unused:
@@ -233,12 +246,32 @@ class _Loader:
 
     def _group(self, scope: _Scope, elem: Element) -> None:
         ns = join_ns(scope.ns, self._attr(scope, elem, "ns") or "")
-        inner = replace(scope, ns=ns)
+        inner = replace(scope, ns=ns, remaps=list(scope.remaps))
         if scope.dialect is Dialect.ROS2:
             scoped = self._attr(scope, elem, "scoped")
             if scoped is None or truth(scoped, self._ctx(scope, elem), "scoped"):
                 inner.args = dict(scope.args)
+            else:
+                inner.remaps = scope.remaps
         self._walk(elem.children, inner)
+
+    # -- remaps --------------------------------------------------------------------
+    def _remap(self, scope: _Scope, elem: Element, rules: list[Remap]) -> None:
+        source, target = self._req(scope, elem, "from"), self._req(scope, elem, "to")
+        if scope.dialect is Dialect.ROS2:
+            rules.append((source, target))  # checked by rcl when the node starts, as in ROS
+            return
+        problem = ros1_problem(source, target)
+        if problem:
+            raise self._ctx(scope, elem).error(problem)
+        ros1_add(rules, source, target)
+
+    def _scope_remap(self, scope: _Scope, elem: Element) -> None:
+        if scope.dialect is Dialect.ROS2 and elem.tag == "remap":
+            self.notes.append(f"{where(scope.path, elem.line)}: <remap> outside a <node> ignored "
+                              "(ROS 2 launch: <set_remap>)")
+            return
+        self._remap(scope, elem, scope.remaps)
 
     # -- parameters ----------------------------------------------------------------
     def _param(self, scope: _Scope, elem: Element, prefix: str = "") -> list[Param]:
@@ -266,10 +299,19 @@ class _Loader:
         command_text = self._attr(scope, elem, "command")
         if command_text is not None:
             return [Param(name, xacro=parse_xacro_command(command_text, ctx), file=scope.path, line=elem.line)]
-        if "from" in elem.attrib or "binfile" in elem.attrib:
+        if "binfile" in elem.attrib or "from" in elem.attrib:
             self.notes.append(f"{where(scope.path, elem.line)}: <param name=\"{name}\"> from a file ignored")
             return []
         raise ctx.error(f"<param name=\"{name}\"> needs value, textfile or command")
+
+    def _params_file(self, scope: _Scope, elem: Element, files: list[tuple[Path, int]]) -> None:
+        # launch_ros makes it absolute without resolving links (the node sees the path as written).
+        path = Path(os.path.abspath(self._req(scope, elem, "from")))  # noqa: PTH100
+        if path.is_file():
+            files.append((path, elem.line))
+        else:
+            # launch_ros warns and starts the node without it.
+            self.notes.append(f"{where(scope.path, elem.line)}: Parameter file path is not a file: {path}")
 
     def _global_param(self, scope: _Scope, elem: Element, ns: str) -> None:
         if scope.dialect is Dialect.ROS2:
@@ -313,18 +355,28 @@ class _Loader:
         name = self._attr(scope, elem, "name") or executable.rsplit("/", 1)[-1].removesuffix(".py")
         ns_attr = self._attr(scope, elem, "namespace") or self._attr(scope, elem, "ns") or ""
         params: dict[str, Param] = {}
+        files: list[tuple[Path, int]] = []
+        remaps = list(scope.remaps)
         for child in elem.children:
             if not self._enabled(scope, child):
                 continue
-            if child.tag == "param":
+            if child.tag == "param" and "from" in child.attrib and scope.dialect is Dialect.ROS2:
+                self._params_file(scope, child, files)
+            elif child.tag == "param":
                 for p in self._param(scope, child):
                     params[p.name.replace("/", ".")] = p
             elif child.tag == "rosparam":
                 for p in self._rosparam(scope, child):
                     params[p.name] = p
+            elif child.tag == "remap":
+                self._remap(scope, child, remaps)
+        namespace = join_ns(scope.ns, ns_attr)
         required = self._attr(scope, elem, "required") or "false"
         self.nodes.append(NodeDecl(
-            pkg=pkg, executable=executable, name=name, namespace=join_ns(scope.ns, ns_attr),
+            pkg=pkg, executable=executable, name=name, namespace=namespace,
             args=self._attr(scope, elem, "args") or "", params=params,
             required=truth(required, self._ctx(scope, elem), "required"), file=scope.path, line=elem.line,
+            named="name" in elem.attrib,
+            remaps=tuple(remaps) if scope.dialect is Dialect.ROS2 else ros1_for_node(remaps, namespace, name),
+            param_files=tuple(files),
         ))

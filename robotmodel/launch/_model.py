@@ -52,7 +52,10 @@ class NodeDecl:
     """A ``<node>`` after substitution: what ROS would start, before it is mapped to a command.
 
     ``namespace`` is absolute (``/`` at the root); ``params`` are the node's own (private)
-    parameters by relative name (``zeros.j1`` for ROS 2's nested parameters).
+    parameters by relative name (``zeros.j1`` for ROS 2's nested parameters). ``named``
+    says whether the file gave the node a name (else ``name`` is the executable's);
+    ``remaps`` are its remap rules (``from``, ``to``) in the order rcl should try them;
+    ``param_files`` are ROS 2 ``<param from="FILE"/>`` params files, each with the line of its tag.
     """
 
     pkg: str
@@ -64,6 +67,9 @@ class NodeDecl:
     required: bool
     file: Path
     line: int
+    named: bool = True
+    remaps: tuple[tuple[str, str], ...] = ()
+    param_files: tuple[tuple[Path, int], ...] = ()
 
     @property
     def full_name(self) -> str:

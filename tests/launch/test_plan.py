@@ -28,10 +28,12 @@ def test_ros1_nested_includes_conditions_and_params(pkg, ros1_top, tmp_path):
     assert argv(plan) == {
         # rate comes from $(eval 2 * 5) in top.launch; zeros from a <rosparam> map.
         "/jsp": ("joint-state-publisher", xacro, "prefix:=", "--package-path", root, "--rate", "10",
-                 "--zeros", "shoulder=0.5"),
+                 "--zeros", "shoulder=0.5", "--ros-args", "-r", "__node:=jsp"),
         # publish_frequency: $(eval rate * 5) in the middle file, passed two includes down.
-        "/rsp": ("robot-state-publisher", xacro, "prefix:=", "--package-path", root, "--publish-frequency", "50"),
-        "/map_odom": ("static-transform-publisher", "1", "2", "0", "0", "0", "0", "map", "odom", "100"),
+        "/rsp": ("robot-state-publisher", xacro, "prefix:=", "--package-path", root, "--publish-frequency", "50",
+                 "--ros-args", "-r", "__node:=rsp"),
+        "/map_odom": ("static-transform-publisher", "1", "2", "0", "0", "0", "0", "map", "odom", "100",
+                      "--ros-args", "-r", "__node:=map_odom"),
     }
     assert plan.skipped == ["/sensors/scan_filter (probe_description/scan_filter.py): no robotmodel equivalent, "
                             "not started"]
@@ -42,9 +44,10 @@ def test_ros1_command_line_args_flip_the_conditions(pkg, ros1_top, tmp_path):
     plan = plan_of(top, pkg.root, tmp_path, gui="true", with_static="false", prefix="left_")
     xacro, root = str(pkg.xacro), str(pkg.root)
     assert argv(plan) == {
-        "/jsp_gui": ("joint-state-publisher-gui", xacro, "prefix:=left_", "--package-path", root),
+        "/jsp_gui": ("joint-state-publisher-gui", xacro, "prefix:=left_", "--package-path", root,
+                     "--ros-args", "-r", "__node:=jsp_gui"),
         "/rsp": ("robot-state-publisher", xacro, "prefix:=left_", "--package-path", root,
-                 "--publish-frequency", "50"),
+                 "--publish-frequency", "50", "--ros-args", "-r", "__node:=rsp"),
     }
     assert plan.skipped == []
 
@@ -64,7 +67,7 @@ def test_ros2_scopes_namespaces_command_and_nested_params(pkg, ros2_top, tmp_pat
                                           "--ros-args", "-r", "__ns:=/robot1"),
         # child=odom set by the include's <arg> wins over statics.launch.xml's default, two levels down.
         "/map_odom": ("static-transform-publisher", "--x", "1", "--y", "2", "--frame-id", "map",
-                      "--child-frame-id", "odom"),
+                      "--child-frame-id", "odom", "--ros-args", "-r", "__node:=map_odom"),
         # $(var child) is still set after the include (ROS 2 includes do not scope), so rviz2 runs.
         "/rviz2": ("view", "--follow", "--package-path", root),
     }
@@ -109,7 +112,8 @@ def test_textfile_literal_value_and_search_up_the_namespace(pkg, tmp_path):
     plan = plan_of(path, pkg.root, tmp_path)
     lit = argv(plan)["/arm/deeper/rsp_arm"][1]
     assert Path(lit).read_text() == "<robot name='lit'><link name='b'/></robot>"
-    assert argv(plan)["/rsp"] == ("robot-state-publisher", str(urdf), "--package-path", str(pkg.root))
+    assert argv(plan)["/rsp"] == ("robot-state-publisher", str(urdf), "--package-path", str(pkg.root),
+                                  "--ros-args", "-r", "__node:=rsp")
     assert [p.name for p in plan.processes] == ["/arm/deeper/rsp_arm", "/map_odom", "/rsp", "/rviz"]
     assert [s.split(" ")[0] for s in plan.skipped] == ["/odom_sim", "/scan_sim"]
 
@@ -129,6 +133,7 @@ def test_substitutions(pkg, tmp_path, monkeypatch):
         </launch>
     """)
     words = argv(plan_of(path, pkg.root, tmp_path))["/s"][1:]
+    assert words[-3:] == ("--ros-args", "-r", "__node:=s")
     # args are split on blanks, as the node's argv.
     assert words[:7] == ("from_env", "fall", "back", "True", "FALL", "BACK", str(path.parent))
     assert words[7] == words[8] and words[7].startswith("x_")
@@ -146,7 +151,8 @@ def test_ros2_substitutions(pkg, tmp_path):
         </launch>
     """)
     words = argv(plan_of(path, pkg.root, tmp_path))["/s"][1:]
-    assert words == ("3.141592653589793", "4", "true", "true", "false", "true", "dflt", str(pkg.dir))
+    assert words == ("3.141592653589793", "4", "true", "true", "false", "true", "dflt", str(pkg.dir),
+                     "--ros-args", "-r", "__node:=s")
 
 
 def test_pkg_file_form_and_dry_run_output(pkg, ros1_top, capsys):
@@ -158,10 +164,11 @@ def test_pkg_file_form_and_dry_run_output(pkg, ros1_top, capsys):
     assert out[0] == "skipped: /sensors/scan_filter (probe_description/scan_filter.py): no robotmodel equivalent, " \
                      "not started"
     assert out[1:] == [
-        f"/jsp_gui: robotmodel joint-state-publisher-gui {pkg.xacro} prefix:= --package-path {pkg.root} --open",
+        f"/jsp_gui: robotmodel joint-state-publisher-gui {pkg.xacro} prefix:= --package-path {pkg.root} --open "
+        "--ros-args -r __node:=jsp_gui",
         f"/rsp: robotmodel robot-state-publisher {pkg.xacro} prefix:= --package-path {pkg.root} "
-        "--publish-frequency 50",
-        "/map_odom: robotmodel static-transform-publisher 1 2 0 0 0 0 map odom 100",
+        "--publish-frequency 50 --ros-args -r __node:=rsp",
+        "/map_odom: robotmodel static-transform-publisher 1 2 0 0 0 0 map odom 100 --ros-args -r __node:=map_odom",
     ]
 
 
@@ -177,7 +184,7 @@ def test_jsp_use_gui_and_ros2_description_argument(pkg, tmp_path):
     """)
     assert argv(plan_of(path, pkg.root, tmp_path)) == {
         "/old_gui": ("joint-state-publisher-gui", str(pkg.xacro), "--package-path", str(pkg.root),
-                     "--joint=shoulder=-0.25"),
+                     "--joint=shoulder=-0.25", "--ros-args", "-r", "__node:=old_gui"),
     }
     path = pkg.launch("jsp.launch.xml", """
         <launch>
@@ -217,7 +224,8 @@ def test_ros1_find_inside_a_command_line_arg_is_resolved(pkg, ros1_top, tmp_path
         </launch>
     """)
     plan = plan_of(path, pkg.root, tmp_path, model="$(find probe_description)/urdf/other.urdf.xacro")
-    assert argv(plan)["/rsp"] == ("robot-state-publisher", str(other), "--package-path", str(pkg.root))
+    assert argv(plan)["/rsp"] == ("robot-state-publisher", str(other), "--package-path", str(pkg.root),
+                                  "--ros-args", "-r", "__node:=rsp")
 
 
 def test_ros2_find_exec_xacro_command(pkg, tmp_path):
@@ -264,7 +272,9 @@ def test_ros1_jsp_reads_use_gui_and_rate_from_its_namespace(pkg, tmp_path):
         </launch>
     """)
     assert argv(plan_of(path, pkg.root, tmp_path)) == {
-        "/joint_state_publisher": ("joint-state-publisher-gui", str(pkg.xacro), "--package-path", str(pkg.root)),
+        # The GUI runs under the name the file gave it.
+        "/joint_state_publisher": ("joint-state-publisher-gui", str(pkg.xacro), "--package-path", str(pkg.root),
+                                   "--ros-args", "-r", "__node:=joint_state_publisher"),
     }
     assert argv(plan_of(path, pkg.root, tmp_path, gui="false")) == {
         "/joint_state_publisher": ("joint-state-publisher", str(pkg.xacro), "--package-path", str(pkg.root)),
