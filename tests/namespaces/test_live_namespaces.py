@@ -104,7 +104,8 @@ def test_two_namespaced_robots_share_tf_but_not_joint_states(live, package: Path
     assert not {"/joint_states", "/robot_description", "/commands"} & topics, topics
     # A relative topic name given to topic echo resolves under its --namespace.
     echo = subprocess.run([sys.executable, "-m", "robotmodel.cli.main", "topic", "echo", "joint_states",
-                           "--namespace", "r1", "--once", "--field", "position", "--timeout", "30"],
+                           "--namespace", "r1", "--once", "--field", "position", "--timeout", "30",
+                           "--spin-time", "3"],  # discovery's 0.5 s default is short for a loaded machine
                           env=live.env, capture_output=True, text=True, timeout=60, check=False)
     assert echo.returncode == 0, echo.stderr
     assert echo.stdout == f"- {Q1}\n---\n"
@@ -128,9 +129,13 @@ def test_ros1_groups_launch_publishes_both_trees(live, package, two_robots):
                       "--package-path", str(package))
     buffer = Buffer()
     with TransformListener(buffer):
-        # Each robot's shoulder from its own namespace's joint_state_publisher; its base 1 m either side of world.
-        wait_pose(buffer, "world", "r1_tool", tool_pose(0.3, 1.0))
-        wait_pose(buffer, "world", "r2_tool", tool_pose(-0.7, -1.0))
+        try:
+            # Each robot's shoulder from its own namespace's joint_state_publisher; its base 1 m either side of world.
+            wait_pose(buffer, "world", "r1_tool", tool_pose(0.3, 1.0))
+            wait_pose(buffer, "world", "r2_tool", tool_pose(-0.7, -1.0))
+        except pytest.fail.Exception:
+            print("launch's output:", *proc.out[-20:], *proc.err[-40:], sep="\n")  # shown with the failure
+            raise
     topics = topic_list(live, {"/r1/joint_states", "/r2/joint_states"})
     assert {"/r1/joint_states", "/r1/robot_description", "/r2/joint_states", "/r2/robot_description"} <= topics
     assert "/joint_states" not in topics
@@ -148,7 +153,7 @@ def test_viewer_and_sliders_use_their_namespace(live, package: Path):
         proc.wait_line(r"^http://127\.0\.0\.1:\d+/", timeout=60)
     # The sliders publish on /r2/joint_states, nothing on the global topic.
     echo = subprocess.run([sys.executable, "-m", "robotmodel.cli.main", "topic", "echo", "/r2/joint_states",
-                           "--once", "--field", "position", "--timeout", "30"],
+                           "--once", "--field", "position", "--timeout", "30", "--spin-time", "3"],
                           env=live.env, capture_output=True, text=True, timeout=60, check=False)
     assert echo.returncode == 0, echo.stderr
     assert echo.stdout == "- 0.4\n---\n"
