@@ -314,7 +314,12 @@ def test_open_hands_the_url_to_the_users_browser(tmp_path: Path) -> None:
         assert re.fullmatch(r"http://127\.0\.0\.1:\d+/", url)
     finally:
         proc.send_signal(signal.SIGINT)
-        assert proc.wait(timeout=30) == 0
+        try:
+            code = proc.wait(timeout=30)
+        finally:
+            proc.kill()  # reaped even when it did not stop
+            proc.wait()
+    assert code == 0
 
 
 def test_normals_are_sent_unit_and_outward_and_follow_the_scale(tmp_path: Path) -> None:
