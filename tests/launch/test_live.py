@@ -1,4 +1,4 @@
-"""Launch files run as real processes on a private bus: TF comes out, and everything stops together."""
+"""Launch files run as real processes on a private bus: TF comes out (remapped topics too), all stop together."""
 
 from __future__ import annotations
 
@@ -13,6 +13,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from robotmodel.bus import Node
 from robotmodel.errors import TransformException
 from robotmodel.tf import Buffer, Time
 from robotmodel.tf_ros import TransformListener
@@ -226,4 +227,91 @@ def test_required_node_exiting_brings_the_launch_down(live, pkg):
     assert proc.popen.wait(60) == 1
     proc.wait_line(r"^\[broken-2\] process has died \[pid \d+, exit code 1\]$", stream="err")
     proc.wait_line(r"^\[broken-2\] required process has exited, shutting down$", stream="err")
+    wait_gone(pids.values(), timeout=1.0)
+
+
+# Remaps: /tf comes only through the remapped joint_states. With shoulder = Q the probe's tool
+# sits at (0.25 cos Q, 0.25 sin Q, 0.5) in base_link.
+Q = 0.5
+TOOL = (0.25 * math.cos(Q), 0.25 * math.sin(Q), 0.5)
+
+
+def wait_graph(node: Node, proc, timeout: float = 40.0) -> None:
+    """Until /arm/joint_states has its publisher (jsp) and subscriber (rsp)."""
+    deadline = time.monotonic() + timeout
+    while node.count_publishers("/arm/joint_states") < 1 or node.count_subscribers("/arm/joint_states") < 1:
+        if time.monotonic() > deadline or proc.popen.poll() is not None:
+            pytest.fail(f"/arm/joint_states: {node.count_publishers('/arm/joint_states')} publishers, "
+                        f"{node.count_subscribers('/arm/joint_states')} subscribers within {timeout} s\n"
+                        + "\n".join(proc.err[-20:]))
+        time.sleep(0.05)
+
+
+def only_remapped(node: Node, *unused: str) -> None:
+    for topic in unused:
+        assert (node.count_publishers(topic), node.count_subscribers(topic)) == (0, 0), topic
+
+
+def test_ros1_remaps_in_node_and_group_route_joint_states(live, pkg):
+    path = pkg.launch("remapped.launch", """
+        <launch>
+          <param name="robot_description"
+                 command="$(find xacro)/xacro $(find probe_description)/urdf/probe.urdf.xacro"/>
+          <node pkg="joint_state_publisher" type="joint_state_publisher" name="jsp">
+            <remap from="joint_states" to="/arm/joint_states"/>
+            <rosparam param="zeros">{shoulder: 0.5}</rosparam>
+          </node>
+          <group>
+            <remap from="joint_states" to="/arm/joint_states"/>
+            <node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>
+          </group>
+        </launch>
+    """)
+    proc = launch(live, str(path), "--package-path", str(pkg.root))
+    pids = started(proc, 2)
+    with Node("launch_probe") as node:
+        wait_graph(node, proc)
+        only_remapped(node, "/joint_states")
+        buffer = Buffer()
+        with TransformListener(buffer):
+            xyz, _ = wait_value(buffer, "base_link", "tool", TOOL)
+            assert np.allclose(xyz, TOOL, atol=1e-9)
+        only_remapped(node, "/joint_states")
+    assert proc.stop(signal.SIGTERM) == 0
+    wait_gone(pids.values(), timeout=1.0)
+
+
+def test_ros2_set_remap_node_remap_name_namespace_and_params_file(live, pkg):
+    config = pkg.dir / "config" / "jsp.yaml"
+    config.parent.mkdir()
+    # Reaches the node only under its launch-given name and namespace (/r2/my_jsp).
+    config.write_text("/r2/my_jsp:\n  ros__parameters:\n    zeros:\n      shoulder: 0.5\n")
+    path = pkg.launch("remapped.launch.xml", """
+        <launch>
+          <let name="model" value="$(find-pkg-share probe_description)/urdf/probe.urdf.xacro"/>
+          <group>
+            <push-ros-namespace namespace="r2"/>
+            <node pkg="joint_state_publisher" exec="joint_state_publisher" name="my_jsp" args="$(var model)">
+              <param from="$(find-pkg-share probe_description)/config/jsp.yaml"/>
+              <remap from="joint_states" to="/arm/joint_states"/>
+            </node>
+            <set_remap from="joint_states" to="/arm/joint_states"/>
+            <node pkg="robot_state_publisher" exec="robot_state_publisher" name="my_rsp">
+              <param name="robot_description" value="$(command 'xacro $(var model)')"/>
+            </node>
+          </group>
+        </launch>
+    """)
+    proc = launch(live, str(path), "--package-path", str(pkg.root))
+    pids = started(proc, 2)
+    assert sorted(pids) == ["r2/my_jsp-1", "r2/my_rsp-2"]
+    with Node("launch_probe") as node:
+        wait_graph(node, proc)
+        only_remapped(node, "/joint_states", "/r2/joint_states")
+        buffer = Buffer()
+        with TransformListener(buffer):
+            xyz, _ = wait_value(buffer, "base_link", "tool", TOOL)
+            assert np.allclose(xyz, TOOL, atol=1e-9)
+        only_remapped(node, "/joint_states", "/r2/joint_states")
+    assert proc.stop(signal.SIGINT) == 0
     wait_gone(pids.values(), timeout=1.0)
