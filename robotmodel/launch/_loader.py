@@ -24,11 +24,10 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
-import yaml
-
 from robotmodel.errors import LaunchError
 from robotmodel.launch._model import Dialect, NodeDecl, Param
 from robotmodel.launch._remaps import Remap, ros1_add, ros1_for_node, ros1_problem
+from robotmodel.launch._rosparam import read_rosparam_file, rosparam_params
 from robotmodel.launch._subst import Sub, SubstContext, parse, parse_xacro_command, resolve, resolve_parts, truth
 from robotmodel.launch._xml import Element, parse_file, where
 
@@ -36,9 +35,9 @@ __all__ = ["LaunchFile", "detect_dialect", "join_ns", "load_launch_file"]
 
 _MAX_DEPTH = 32
 _IGNORED = frozenset({
-    "env", "machine", "set_env", "unset_env", "set_parameter", "set-env", "unset-env", "set-parameter", "log",
-    "timer",
+    "env", "machine", "set_env", "unset_env", "set-env", "unset-env", "log", "timer", "set_parameters_from_file",
 })
+_SET_PARAMETER = frozenset({"set_parameter", "set-parameter"})
 _SET_REMAP = frozenset({"set_remap", "set-remap"})
 _ROS2_TAGS = frozenset({"let", "push-ros-namespace", "push_ros_namespace", "executable", "set_env", "set-env"})
 
@@ -64,6 +63,8 @@ class _Scope:
     depth: int
     #: Remap rules in force for the nodes that follow (ROS 1 <remap>, ROS 2 <set_remap>).
     remaps: list[Remap] = field(default_factory=list)
+    #: ROS 2 <set_parameter> values (name, value) for the nodes that follow, scoped as the remaps.
+    params: list[tuple[str, str]] = field(default_factory=list)
 
 
 def join_ns(base: str, name: str) -> str:
@@ -160,6 +161,8 @@ class _Loader:
                 self._node(scope, elem)
             elif tag == "remap" or (tag in _SET_REMAP and scope.dialect is Dialect.ROS2):
                 self._scope_remap(scope, elem)
+            elif tag in _SET_PARAMETER and scope.dialect is Dialect.ROS2:
+                scope.params.append((self._req(scope, elem, "name"), self._req(scope, elem, "value")))
             elif tag == "param":
                 self._global_param(scope, elem, scope.ns)
             elif tag == "rosparam":
@@ -230,8 +233,11 @@ class _Loader:
             configs = scope.args if scope.dialect is Dialect.ROS2 else {}
             configs.update(given)
             # Not scoped: its <set_remap> rules stay in force after it, as its configurations do.
-            remaps = scope.remaps if scope.dialect is Dialect.ROS2 else list(scope.remaps)
-            self._walk(root.children, _Scope(path, dialect, configs, given, set(), ns, scope.depth + 1, remaps))
+            shared = scope.dialect is Dialect.ROS2
+            remaps = scope.remaps if shared else list(scope.remaps)
+            params = scope.params if shared else []
+            self._walk(root.children, _Scope(path, dialect, configs, given, set(), ns, scope.depth + 1, remaps,
+                                             params))
             return
         passed = {}
         pass_all = self._attr(scope, elem, "pass_all_args")
@@ -246,13 +252,13 @@ class _Loader:
 
     def _group(self, scope: _Scope, elem: Element) -> None:
         ns = join_ns(scope.ns, self._attr(scope, elem, "ns") or "")
-        inner = replace(scope, ns=ns, remaps=list(scope.remaps))
+        inner = replace(scope, ns=ns, remaps=list(scope.remaps), params=list(scope.params))
         if scope.dialect is Dialect.ROS2:
             scoped = self._attr(scope, elem, "scoped")
             if scoped is None or truth(scoped, self._ctx(scope, elem), "scoped"):
                 inner.args = dict(scope.args)
             else:
-                inner.remaps = scope.remaps
+                inner.remaps, inner.params = scope.remaps, scope.params
         self._walk(elem.children, inner)
 
     # -- remaps --------------------------------------------------------------------
@@ -323,26 +329,19 @@ class _Loader:
     def _rosparam(self, scope: _Scope, elem: Element) -> list[Param]:
         ctx = self._ctx(scope, elem)
         command = self._attr(scope, elem, "command") or "load"
-        if command != "load" or "file" in elem.attrib:
+        if command != "load":
             self.notes.append(f"{where(scope.path, elem.line)}: <rosparam command=\"{command}\"> ignored")
             return []
-        try:
-            data = yaml.safe_load(resolve(elem.text, ctx)) if elem.text.strip() else None
-        except yaml.YAMLError as exc:
-            raise ctx.error(f"<rosparam>: invalid YAML: {' '.join(str(exc).splitlines())}") from None
+        file = self._attr(scope, elem, "file")
+        if file is None:
+            text = resolve(elem.text, ctx)
+        else:
+            text = read_rosparam_file(Path(file), ctx)
+            subst = self._attr(scope, elem, "subst_value")
+            if subst is not None and truth(subst, ctx, "subst_value"):
+                text = resolve(text, ctx)
         base = join_ns(self._attr(scope, elem, "ns") or "", self._attr(scope, elem, "param") or "").lstrip("/")
-        out: list[Param] = []
-
-        def flatten(prefix: str, value: object) -> None:
-            if isinstance(value, dict) and value:
-                for key, item in value.items():
-                    flatten(f"{prefix}/{key}" if prefix else str(key), item)
-            elif prefix:
-                out.append(Param(prefix.replace("/", "."), value=yaml.safe_dump(value, default_flow_style=True)
-                                 .strip().removesuffix("...").strip(), file=scope.path, line=elem.line))
-
-        flatten(base, data)
-        return out
+        return rosparam_params(text, base, ctx)
 
     # -- nodes ---------------------------------------------------------------------
     def _node(self, scope: _Scope, elem: Element) -> None:
@@ -376,7 +375,8 @@ class _Loader:
             pkg=pkg, executable=executable, name=name, namespace=namespace,
             args=self._attr(scope, elem, "args") or "", params=params,
             required=truth(required, self._ctx(scope, elem), "required"), file=scope.path, line=elem.line,
-            named="name" in elem.attrib,
+            named="name" in elem.attrib, scope_params=tuple(scope.params),
+            ros_args=self._attr(scope, elem, "ros_args") or "",
             remaps=tuple(remaps) if scope.dialect is Dialect.ROS2 else ros1_for_node(remaps, namespace, name),
             param_files=tuple(files),
         ))

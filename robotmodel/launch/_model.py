@@ -55,7 +55,9 @@ class NodeDecl:
     parameters by relative name (``zeros.j1`` for ROS 2's nested parameters). ``named``
     says whether the file gave the node a name (else ``name`` is the executable's);
     ``remaps`` are its remap rules (``from``, ``to``) in the order rcl should try them;
-    ``param_files`` are ROS 2 ``<param from="FILE"/>`` params files, each with the line of its tag.
+    ``param_files`` are ROS 2 ``<param from="FILE"/>`` params files, each with the line of its tag;
+    ``scope_params`` the ROS 2 ``<set_parameter>`` values in force; ``ros_args`` ROS 2's
+    ``ros_args`` attribute (words for the node's ``--ros-args`` block).
     """
 
     pkg: str
@@ -70,6 +72,8 @@ class NodeDecl:
     named: bool = True
     remaps: tuple[tuple[str, str], ...] = ()
     param_files: tuple[tuple[Path, int], ...] = ()
+    scope_params: tuple[tuple[str, str], ...] = ()
+    ros_args: str = ""
 
     @property
     def full_name(self) -> str:

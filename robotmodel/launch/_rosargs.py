@@ -1,13 +1,15 @@
 """The ``--ros-args`` block a launched node's command gets: name, namespace, parameters, remaps.
 
-launch_ros's order: ``-r __node:=NAME``, ``-r __ns:=/NS``, the parameters (inline ones and
-params files in the file's order), then the remap rules. The commands read it with
+launch_ros's order: the node's ``ros_args`` words, ``-r __node:=NAME``, ``-r __ns:=/NS``, the
+scope's ``<set_parameter>`` values, the node's parameters (inline ones and params files in the
+file's order), then the remap rules. The commands read it with
 ``robotmodel.cli._ros_args`` (rcl's rules), so one mapping decides what each parameter means.
 """
 
 from __future__ import annotations
 
 import re
+import shlex
 from dataclasses import replace
 
 from robotmodel.errors import LaunchError
@@ -35,12 +37,14 @@ def ros_tail(spec: ProcessSpec, node: NodeDecl, consumed: frozenset[str], notes:
     parameter that cannot travel as ``-p`` (from a file or a command, or a name rcl
     refuses) is named in ``notes``.
     """
-    words: list[str] = []
+    words = _split_ros_args(node)
     name = node.name if node.named else _ROS_NAME.get(spec.kind)
     if name is not None and name != _COMMAND_NAME.get(spec.kind):
         words += ["-r", f"__node:={name}"]
     if node.namespace != "/":
         words += ["-r", f"__ns:={_checked_namespace(node)}"]
+    for key, value in node.scope_params:
+        words += ["-p", f"{key}:={value or _EMPTY}"]
     ordered: list[tuple[int, list[str]]] = []
     for key, param in node.params.items():
         if key in consumed:
@@ -62,6 +66,13 @@ def ros_tail(spec: ProcessSpec, node: NodeDecl, consumed: frozenset[str], notes:
 
 # rcl reads an empty value as no value at all; a quoted empty string is the empty string.
 _EMPTY = "''"
+
+
+def _split_ros_args(node: NodeDecl) -> list[str]:
+    try:
+        return shlex.split(node.ros_args)
+    except ValueError as exc:
+        raise LaunchError(f"{node.file}:{node.line}: ros_args=\"{node.ros_args}\": {exc}") from None
 
 
 def _checked_namespace(node: NodeDecl) -> str:

@@ -174,3 +174,54 @@ def test_parameters_not_mapped_to_flags_go_as_ros_parameters(pkg, tmp_path):
     assert got["/gui"] == ("-r", "__node:=gui", "-p", "rate:=20")
     # An empty value as rcl reads the empty string; unnamed: the executable's own name, nothing passed.
     assert got["/robot_state_publisher"] == ("-p", "tf_prefix:=''")
+
+
+def test_ros2_set_parameter_ros_args_and_a_missing_params_file(pkg, tmp_path):
+    path = pkg.launch("global.launch.xml", """
+        <launch>
+          <set_parameter name="use_sim_time" value="false"/>
+          <group>
+            <set_parameter name="publish_default_efforts" value="true"/>
+            <node pkg="joint_state_publisher" exec="joint_state_publisher" name="jsp" ros_args="--log-level warn"
+                  namespace="arm">
+              <param from="$(dirname)/missing.yaml"/>
+              <param name="delta" value="0.2"/>
+            </node>
+          </group>
+          <node pkg="tf2_ros" exec="static_transform_publisher" args="0 0 0 0 0 0 a b"/>
+        </launch>
+    """)
+    plan = build_plan(load_launch_file(path, {}, [pkg.root]), tmp_path, package_paths=[pkg.root], browser=False)
+    # launch_ros warns and starts the node without the file.
+    assert f"{path}:7: Parameter file path is not a file: {pkg.dir / 'launch' / 'missing.yaml'}" in plan.notes
+    assert ros_args(path, pkg.root, tmp_path) == {
+        # ros_args first, then name and namespace, then the scope's values before the node's own.
+        "/arm/jsp": ("--log-level", "warn", "-r", "__node:=jsp", "-r", "__ns:=/arm", "-p", "use_sim_time:=false",
+                     "-p", "publish_default_efforts:=true", "-p", "delta:=0.2"),
+        # The group's <set_parameter> stayed in the group.
+        "/static_transform_publisher": ("-p", "use_sim_time:=false"),
+    }
+
+
+def test_ros1_rosparam_file_in_a_node(pkg, tmp_path):
+    (pkg.dir / "config").mkdir()
+    (pkg.dir / "config" / "zeros.yaml").write_text("zeros:\n  shoulder: $(arg q)\nrate: 7\n")
+    path = pkg.launch("file.launch", """
+        <launch>
+          <arg name="q" default="0.125"/>
+          <param name="robot_description" textfile="$(find probe_description)/urdf/probe.urdf.xacro"/>
+          <node pkg="joint_state_publisher" type="joint_state_publisher" name="jsp">
+            <rosparam command="load" file="$(find probe_description)/config/zeros.yaml" subst_value="true"/>
+          </node>
+        </launch>
+    """)
+    plan = build_plan(load_launch_file(path, {}, [pkg.root]), tmp_path, package_paths=[pkg.root], browser=False)
+    assert plan.processes[0].argv[-7:] == ("--rate", "7", "--zeros", "shoulder=0.125", "--ros-args", "-r",
+                                           "__node:=jsp")
+    # Without subst_value the text is taken as written, as roslaunch does: '$(arg q)' stays a string.
+    path.write_text(path.read_text().replace(' subst_value="true"', ""))
+    with pytest.raises(LaunchError, match=r"parameter 'zeros.shoulder' of /jsp must be a number, got '\$\(arg q\)'"):
+        build_plan(load_launch_file(path, {}, [pkg.root]), tmp_path, package_paths=[pkg.root], browser=False)
+    path.write_text(path.read_text().replace("zeros.yaml", "nope.yaml"))
+    with pytest.raises(LaunchError, match=r"file\.launch:5: <rosparam>: file does not exist \[.*/config/nope\.yaml\]$"):
+        load_launch_file(path, {}, [pkg.root])
