@@ -26,6 +26,12 @@ def register(sub: Any) -> None:
         "as skipped. Ctrl-C or SIGTERM stop every process.",
     )
     add_mapping_arguments(parser)
+    parser.epilog = (f"{parser.epilog or ''} Each process gets what ROS would hand its node, as '--ros-args' (see the "
+                     "command's --help): -r __node:=NAME and -r __ns:=/NS, parameters not mapped onto the command's "
+                     "flags as -p NAME:=VALUE (ROS 2 <set_parameter> too), ROS 2 <param from=FILE/> as --params-file "
+                     "FILE, and the remap rules as -r FROM:=TO: ROS 1 <remap> inside the node or earlier in its "
+                     "group/file scope (the last rule per resolved name), ROS 2 <set_remap> in scope then the node's "
+                     "own <remap> (the first match wins). --dry-run shows the command lines.").strip()
     parser.add_argument("target", metavar="FILE|PKG", help="a launch file, or a package name followed by FILE")
     parser.add_argument("file", metavar="FILE", nargs="?", help="the launch file's name inside package PKG")
     parser.add_argument("--dry-run", action="store_true",

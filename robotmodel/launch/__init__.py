@@ -5,7 +5,8 @@
   ``$(find-pkg-share)``, ``$(eval)`` (a safe subset), ``$(env)``/``$(optenv)``,
   ``$(dirname)`` and xacro's ``$(command)`` are resolved, includes and groups followed.
 - :func:`build_plan`: the ``robotmodel`` commands standing in for those nodes
-  (:class:`LaunchPlan` of :class:`ProcessSpec`), other nodes listed as skipped.
+  (:class:`LaunchPlan` of :class:`ProcessSpec`), other nodes listed as skipped; each with
+  the node's name, namespace, parameters and remap rules as a ``--ros-args`` block.
 - :func:`run_processes`: start them, stop them together on SIGINT/SIGTERM, reap them all.
 - :func:`find_launch_file`: ``PKG FILE`` to a path, as ``roslaunch``/``ros2 launch`` do.
 
