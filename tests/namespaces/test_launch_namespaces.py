@@ -20,13 +20,14 @@ def test_ros1_groups_dry_run_gives_each_process_its_namespace(package, two_robot
     assert "note:" not in err
     expected = []
     for ns, prefix, q, x in (("r1", "r1_", "0.3", "1"), ("r2", "r2_", "-0.7", "-1")):
-        tail = f"--package-path {root} --ros-args -r __ns:=/{ns}"
+        # Each node also gets the name the file gave it (-r __node:=NAME), as launch passes it.
+        tail = f"--package-path {root} --ros-args -r __node:=rsp -r __ns:=/{ns}"
         expected += [
             f"/{ns}/rsp: robotmodel robot-state-publisher {xacro} prefix:={prefix} {tail}",
             f"/{ns}/jsp: robotmodel joint-state-publisher {xacro} prefix:={prefix}"
-            f" --package-path {root} --zeros {prefix}shoulder={q} --ros-args -r __ns:=/{ns}",
+            f" --package-path {root} --zeros {prefix}shoulder={q} --ros-args -r __node:=jsp -r __ns:=/{ns}",
             f"/{ns}/mount: robotmodel static-transform-publisher {x} 0 0 0 0 0 world {prefix}base_link "
-            f"--ros-args -r __ns:=/{ns}",
+            f"--ros-args -r __node:=mount -r __ns:=/{ns}",
         ]
     assert out.splitlines() == expected
 
