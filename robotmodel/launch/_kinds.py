@@ -32,7 +32,7 @@ import yaml
 
 from robotmodel.errors import LaunchError
 from robotmodel.launch._loader import LaunchFile, join_ns
-from robotmodel.launch._model import LaunchPlan, NodeDecl, Param, ProcessSpec
+from robotmodel.launch._model import Dialect, LaunchPlan, NodeDecl, Param, ProcessSpec
 from robotmodel.launch._rosargs import ros_tail
 
 __all__ = ["build_plan"]
@@ -133,11 +133,16 @@ class _Mapper:
     def _description(self, node: NodeDecl) -> tuple[str, ...]:
         param = node.params.get("robot_description")
         if param is None:
-            # ROS 1 searchParam: the node's namespace, then each parent up to the root.
+            # ROS 1 searchParam: the node's namespace, then each parent up to the root; a remap
+            # of the name as written applies first (roscpp matches it unresolved), so
+            # <remap from="robot_description" to="arm_description"/> reads arm_description.
+            key = "robot_description"
+            if node.dialect is Dialect.ROS1:
+                key = next((to for source, to in node.remaps if source == key), key)
             ns = node.namespace
             while param is None:
-                param = self.params.get(join_ns(ns, "robot_description"))
-                if ns == "/":
+                param = self.params.get(join_ns(ns, key))
+                if ns == "/" or key.startswith("/"):
                     break
                 ns = ns.rsplit("/", 1)[0] or "/"
         if param is None:

@@ -376,7 +376,7 @@ class _Loader:
             args=self._attr(scope, elem, "args") or "", params=params,
             required=truth(required, self._ctx(scope, elem), "required"), file=scope.path, line=elem.line,
             named="name" in elem.attrib, scope_params=tuple(scope.params),
-            ros_args=self._attr(scope, elem, "ros_args") or "",
+            ros_args=self._attr(scope, elem, "ros_args") or "", dialect=scope.dialect,
             remaps=tuple(remaps) if scope.dialect is Dialect.ROS2 else ros1_for_node(remaps, namespace, name),
             param_files=tuple(files),
         ))

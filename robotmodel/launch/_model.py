@@ -57,7 +57,8 @@ class NodeDecl:
     ``remaps`` are its remap rules (``from``, ``to``) in the order rcl should try them;
     ``param_files`` are ROS 2 ``<param from="FILE"/>`` params files, each with the line of its tag;
     ``scope_params`` the ROS 2 ``<set_parameter>`` values in force; ``ros_args`` ROS 2's
-    ``ros_args`` attribute (words for the node's ``--ros-args`` block).
+    ``ros_args`` attribute (words for the node's ``--ros-args`` block). ``dialect`` is the
+    file's (None: not known).
     """
 
     pkg: str
@@ -74,6 +75,7 @@ class NodeDecl:
     param_files: tuple[tuple[Path, int], ...] = ()
     scope_params: tuple[tuple[str, str], ...] = ()
     ros_args: str = ""
+    dialect: Dialect | None = None
 
     @property
     def full_name(self) -> str:

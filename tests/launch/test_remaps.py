@@ -225,3 +225,25 @@ def test_ros1_rosparam_file_in_a_node(pkg, tmp_path):
     path.write_text(path.read_text().replace("zeros.yaml", "nope.yaml"))
     with pytest.raises(LaunchError, match=r"file\.launch:5: <rosparam>: file does not exist \[.*/config/nope\.yaml\]$"):
         load_launch_file(path, {}, [pkg.root])
+
+
+def test_ros1_remapped_robot_description_is_the_parameter_read(pkg, tmp_path):
+    arm = pkg.dir / "urdf" / "arm.urdf"
+    arm.write_text('<robot name="arm"><link name="a"/></robot>')
+    path = pkg.launch("two.launch", """
+        <launch>
+          <param name="robot_description" textfile="$(find probe_description)/urdf/probe.urdf.xacro"/>
+          <group ns="left">
+            <param name="arm_description" textfile="$(find probe_description)/urdf/arm.urdf"/>
+            <group ns="deeper">
+              <remap from="robot_description" to="arm_description"/>
+              <node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>
+            </group>
+          </group>
+          <node pkg="robot_state_publisher" type="robot_state_publisher" name="plain"/>
+        </launch>
+    """)
+    plan = build_plan(load_launch_file(path, {}, [pkg.root]), tmp_path, package_paths=[pkg.root], browser=False)
+    files = {p.name: p.argv[1] for p in plan.processes}
+    # roscpp's searchParam takes the remapped name and searches it up from /left/deeper.
+    assert files == {"/left/deeper/rsp": str(arm), "/plain": str(pkg.xacro)}
