@@ -226,6 +226,9 @@ class _Loader:
                     value = self._attr(scope, child, "default", required=True)
                 assert value is not None
                 given[self._req(scope, child, "name")] = value
+            elif child.tag in ("remap", *_SET_REMAP):
+                # Neither roslaunch nor launch_ros applies it there: it has to precede the include.
+                self.notes.append(f"{where(scope.path, child.line)}: <{child.tag}> inside <include> ignored")
         root = parse_file(path)
         dialect = detect_dialect(path, root)
         ns = join_ns(scope.ns, self._attr(scope, elem, "ns") or "")

@@ -247,3 +247,21 @@ def test_ros1_remapped_robot_description_is_the_parameter_read(pkg, tmp_path):
     files = {p.name: p.argv[1] for p in plan.processes}
     # roscpp's searchParam takes the remapped name and searches it up from /left/deeper.
     assert files == {"/left/deeper/rsp": str(arm), "/plain": str(pkg.xacro)}
+
+
+def test_a_remap_inside_an_include_is_noted_not_applied(pkg, tmp_path):
+    pkg.launch("inner.launch", """
+        <launch>
+          <node pkg="tf2_ros" type="static_transform_publisher" name="s" args="0 0 0 0 0 0 a b"/>
+        </launch>
+    """)
+    path = pkg.launch("outer.launch", """
+        <launch>
+          <include file="$(dirname)/inner.launch">
+            <remap from="tf" to="elsewhere"/>
+          </include>
+        </launch>
+    """)
+    plan = build_plan(load_launch_file(path, {}, [pkg.root]), tmp_path, package_paths=[pkg.root], browser=False)
+    assert plan.notes == [f"{path}:3: <remap> inside <include> ignored"]
+    assert plan.processes[0].argv[-3:] == ("--ros-args", "-r", "__node:=s")
