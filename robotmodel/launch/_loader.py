@@ -12,8 +12,9 @@ Scoping follows each system:
 - ROS 2: ``<arg>`` and ``<let>`` set launch configurations; a ``<group>`` scopes them
   (unless ``scoped="false"``), an ``<include>`` does not, so its arguments stay set after
   it, as upstream does. Namespaces come from ``<push-ros-namespace>`` and the node's
-  ``namespace``; ``<set_remap>`` rules are scoped the same way as configurations (a group
-  keeps its own, an include shares its includer's). Parameters belong to nodes, inline or
+  ``namespace``; ``<set_remap>`` and ``<set_parameter>`` live in the configurations (an
+  include shares its includer's; a group's end with it, unless the scope already had some,
+  which launch_ros then extends in place). Parameters belong to nodes, inline or
   from a params file (``<param from="FILE"/>``).
 """
 
@@ -260,6 +261,11 @@ class _Loader:
             scoped = self._attr(scope, elem, "scoped")
             if scoped is None or truth(scoped, self._ctx(scope, elem), "scoped"):
                 inner.args = dict(scope.args)
+                # launch_ros appends <set_remap>/<set_parameter> to the list already in the
+                # configurations, which a group copies shallowly: once the scope has one, the
+                # group's additions stay in force after it too. Only a fresh list stays inside.
+                inner.remaps = scope.remaps if scope.remaps else []
+                inner.params = scope.params if scope.params else []
             else:
                 inner.remaps, inner.params = scope.remaps, scope.params
         self._walk(elem.children, inner)

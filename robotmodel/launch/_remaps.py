@@ -7,7 +7,8 @@
   last rule per resolved ``from``; since rcl applies the *first* matching rule, the list
   handed on keeps only that last rule per resolved name, so the two agree.
 - ROS 2 (launch_ros): ``<set_remap>`` rules of the scope come first, then the node's own
-  ``<remap>`` rules, all verbatim; rcl picks the first match.
+  ``<remap>`` rules, all verbatim; rcl picks the first match. (Their scoping is the
+  loader's: :mod:`robotmodel.launch._loader`.)
 """
 
 from __future__ import annotations

@@ -111,6 +111,10 @@ def test_ros2_set_remap_scopes_and_node_remaps(pkg, tmp_path):
     path = pkg.launch("remaps.launch.xml", """
         <launch>
           <remap from="ignored" to="here"/>
+          <group>
+            <set_remap from="early" to="inside"/>
+            <node pkg="tf2_ros" exec="static_transform_publisher" name="early" args="0 0 0 0 0 0 a b"/>
+          </group>
           <set_remap from="joint_states" to="/arm/joint_states"/>
           <group>
             <push-ros-namespace namespace="r2"/>
@@ -129,16 +133,21 @@ def test_ros2_set_remap_scopes_and_node_remaps(pkg, tmp_path):
     assert [n for n in plan.notes if "<remap>" in n] == [f"{path}:2: <remap> outside a <node> ignored "
                                                          "(ROS 2 launch: <set_remap>)"]
     assert ros_args(path, pkg.root, tmp_path) == {
+        # A group's first <set_remap> starts a list of its own, which ends with the group.
+        "/early": ("-r", "__node:=early", "-r", "early:=inside"),
         # launch_ros: the scope's rules first (rcl takes the first match), then the node's, all verbatim.
         "/r2/rsp": ("-r", "__node:=rsp", "-r", "__ns:=/r2", "-r", "joint_states:=/arm/joint_states",
                     "-r", "tf:=tf_r2", "-r", "joint_states:=overridden_by_the_scope",
                     "-r", "robot_description:=/desc"),
-        "/in_include": ("-r", "__node:=in_include", "-r", "joint_states:=/arm/joint_states",
+        # Once the scope has rules, a group appends to that same list (launch_ros copies the
+        # configurations shallowly), so tf:=tf_r2 outlives its group.
+        "/in_include": ("-r", "__node:=in_include", "-r", "joint_states:=/arm/joint_states", "-r", "tf:=tf_r2",
                         "-r", "from_include:=leaks"),
         # An include does not scope: its <set_remap> is still in force after it. Unnamed, the GUI
         # takes joint_state_publisher_gui's own name.
         "/joint_state_publisher_gui": ("-r", "__node:=joint_state_publisher_gui",
-                                       "-r", "joint_states:=/arm/joint_states", "-r", "from_include:=leaks"),
+                                       "-r", "joint_states:=/arm/joint_states", "-r", "tf:=tf_r2",
+                                       "-r", "from_include:=leaks"),
     }
 
 
@@ -179,6 +188,9 @@ def test_parameters_not_mapped_to_flags_go_as_ros_parameters(pkg, tmp_path):
 def test_ros2_set_parameter_ros_args_and_a_missing_params_file(pkg, tmp_path):
     path = pkg.launch("global.launch.xml", """
         <launch>
+          <group>
+            <set_parameter name="scoped" value="1"/>
+          </group>
           <set_parameter name="use_sim_time" value="false"/>
           <group>
             <set_parameter name="publish_default_efforts" value="true"/>
@@ -193,13 +205,14 @@ def test_ros2_set_parameter_ros_args_and_a_missing_params_file(pkg, tmp_path):
     """)
     plan = build_plan(load_launch_file(path, {}, [pkg.root]), tmp_path, package_paths=[pkg.root], browser=False)
     # launch_ros warns and starts the node without the file.
-    assert f"{path}:7: Parameter file path is not a file: {pkg.dir / 'launch' / 'missing.yaml'}" in plan.notes
+    assert f"{path}:10: Parameter file path is not a file: {pkg.dir / 'launch' / 'missing.yaml'}" in plan.notes
     assert ros_args(path, pkg.root, tmp_path) == {
         # ros_args first, then name and namespace, then the scope's values before the node's own.
         "/arm/jsp": ("--log-level", "warn", "-r", "__node:=jsp", "-r", "__ns:=/arm", "-p", "use_sim_time:=false",
                      "-p", "publish_default_efforts:=true", "-p", "delta:=0.2"),
-        # The group's <set_parameter> stayed in the group.
-        "/static_transform_publisher": ("-p", "use_sim_time:=false"),
+        # The first group's value stayed in it; the second's was added to the scope's list, as
+        # launch_ros does it, so it outlives its group.
+        "/static_transform_publisher": ("-p", "use_sim_time:=false", "-p", "publish_default_efforts:=true"),
     }
 
 
