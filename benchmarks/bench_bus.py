@@ -7,7 +7,8 @@
   ``put``/subscriber callbacks on the same two sessions. Target p50 <= 0.3 ms.
 - Throughput: this process publishes N TFMessages (one transform each, each serialized)
   as fast as it can on a reliable keep-all publisher (rmw_zenoh blocks only for that
-  profile, so nothing is dropped); the other process decodes and counts them. Rate = N / (last receive - first send). Raw zenoh:
+  profile, so nothing is dropped); the other process decodes and counts them.
+  Rate = N / (last receive - first send). Raw zenoh:
   the same count of same-size payloads with ``put`` (BLOCK) to a counting callback.
   Two bus receivers: TFMessage objects, and ``TFRecords`` (parent, child, stamp, pose
   tuples: what a TF listener inserts into its buffer). Targets >= 100k TF messages/s and
