@@ -51,13 +51,14 @@ transforms:
 
 def test_topic_list_shows_the_latched_topic(procs: Any) -> None:
     procs.peer("static-pub").wait_line("ready")
-    plain = procs.cli("topic", "list")
+    # 3 s of discovery rather than ros2's 0.5 s default: the graph query is slow on a loaded machine.
+    plain = procs.cli("topic", "list", "--spin-time", "3")
     assert plain.popen.wait(30) == 0, plain.errors
     assert plain.wait_for(lambda ls: "/tf_static" in ls, 2), plain.lines
-    typed = procs.cli("topic", "list", "-t")
+    typed = procs.cli("topic", "list", "-t", "--spin-time", "3")
     assert typed.popen.wait(30) == 0
     assert typed.wait_for(lambda ls: "/tf_static [tf2_msgs/msg/TFMessage]" in ls, 2), typed.lines
-    count = procs.cli("topic", "list", "-c")
+    count = procs.cli("topic", "list", "-c", "--spin-time", "3")
     assert count.popen.wait(30) == 0
     assert count.wait_for(lambda ls: ls == ["1"], 2), count.lines
 
