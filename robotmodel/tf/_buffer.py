@@ -32,6 +32,7 @@ from robotmodel.msgs import (
     Vector3Stamped,
     stamp,
 )
+from robotmodel.msgs.builtin_interfaces import Time as StampMsg
 from robotmodel.spatial import Pose7, pose_compose
 from robotmodel.tf._checks import checked_stamps, time_arg_ns
 from robotmodel.tf._core import BufferCore
@@ -44,11 +45,11 @@ Stamped = TypeVar("Stamped", PointStamped, PoseStamped, Vector3Stamped)
 
 
 def _message(pose: Pose7, stamp_ns: int, target: str, source: str) -> TransformStamped:
-    return TransformStamped(
-        header=Header(stamp=stamp(stamp_ns), frame_id=target),
-        child_frame_id=source,
-        transform=Transform(Vector3(pose[0], pose[1], pose[2]), Quaternion(pose[3], pose[4], pose[5], pose[6])),
-    )
+    # Positional fields and an inline split of the (always int) stamp: this runs on every lookup.
+    x, y, z, qx, qy, qz, qw = pose
+    sec, nanosec = divmod(stamp_ns, 1_000_000_000)
+    return TransformStamped(Header(StampMsg(sec, nanosec), target), source,
+                            Transform(Vector3(x, y, z), Quaternion(qx, qy, qz, qw)))
 
 
 def _timeout_ns(timeout: Any) -> int:

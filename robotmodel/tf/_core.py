@@ -291,22 +291,23 @@ class BufferCore(FrameGraph):
         top = 0
         miss: CacheMiss | None = None
         depth = 0
+        compose, limit = pose_compose, MAX_GRAPH_DEPTH  # locals: this loop runs on every lookup
         while frame:
             cache = caches[frame]
             top = frame
             if cache is None:
                 break
             got = cache.sample(time_ns)
-            if isinstance(got, CacheMiss):
+            if got.__class__ is CacheMiss:  # final class: cheaper than isinstance in the hot loop
                 miss = got
                 break
             if frame == target_id:
                 break
-            pose, parent = got
-            source_acc = pose if source_acc is None else pose_compose(pose, source_acc)
+            pose, parent = got  # type: ignore[misc]
+            source_acc = pose if source_acc is None else compose(pose, source_acc)
             frame = parent
             depth += 1
-            if depth > MAX_GRAPH_DEPTH:
+            if depth > limit:
                 raise self._loop_error(target, source)
         if source_acc is None:
             source_acc = IDENTITY
