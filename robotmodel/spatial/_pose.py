@@ -10,7 +10,9 @@ from __future__ import annotations
 
 import math
 from math import acos as _acos
+from math import copysign as _copysign
 from math import sin as _sin
+from math import sqrt as _sqrt
 
 __all__ = ["IDENTITY_POSE", "Pose7", "Quat", "pose_compose", "pose_interpolate", "pose_inverse", "quat_canonical"]
 
@@ -21,6 +23,9 @@ Quat = tuple[float, float, float, float]
 
 #: The identity transform.
 IDENTITY_POSE: Pose7 = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0)
+
+_INF = math.inf
+_NAN4: Quat = (math.nan, math.nan, math.nan, math.nan)
 
 
 def pose_compose(a: Pose7, b: Pose7) -> Pose7:
@@ -95,10 +100,14 @@ def quat_canonical(q: Quat) -> Quat:
     """
     x, y, z, w = q
     n2 = x * x + y * y + z * z + w * w
-    s = 2.0 / n2 if n2 > 0.0 else math.inf
-    if math.isinf(s) or math.isinf(n2) or math.isnan(n2):
-        # tf2's matrix then holds inf - inf: its round trip gives NaN.
-        return (math.nan, math.nan, math.nan, math.nan)
+    # Zero, NaN or infinite norm, or one so small that 2/|q|^2 overflows: tf2's matrix then
+    # holds inf - inf and its round trip gives NaN. (Comparisons, not isinf/isnan calls: this
+    # runs on every lookup.)
+    if not 0.0 < n2 < _INF:
+        return _NAN4
+    s = 2.0 / n2
+    if s == _INF:
+        return _NAN4
     xx, yy, zz = x * (x * s), y * (y * s), z * (z * s)
     m00, m11, m22 = 1.0 - (yy + zz), 1.0 - (xx + zz), 1.0 - (xx + yy)
     if m00 + m11 + m22 > 0.0:
@@ -107,5 +116,5 @@ def quat_canonical(q: Quat) -> Quat:
         lead = z if m11 < m22 else y
     else:
         lead = z if m00 < m22 else x
-    inv = math.copysign(1.0 / math.sqrt(n2), lead)
+    inv = _copysign(1.0 / _sqrt(n2), lead)
     return (x * inv, y * inv, z * inv, w * inv)
