@@ -174,7 +174,7 @@ def _value(node: NodeDecl, name: str) -> object:
     if param is None or param.value is None:
         return None
     try:
-        return yaml.safe_load(param.value)
+        return yaml.safe_load(param.typed if param.typed is not None else param.value)
     except yaml.YAMLError:
         return param.value
 

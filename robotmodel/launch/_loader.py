@@ -27,6 +27,7 @@ from pathlib import Path
 
 from robotmodel.errors import LaunchError
 from robotmodel.launch._model import Dialect, NodeDecl, Param
+from robotmodel.launch._ptype import ros1_param_text
 from robotmodel.launch._remaps import Remap, ros1_add, ros1_for_node, ros1_problem
 from robotmodel.launch._rosparam import read_rosparam_file, rosparam_params
 from robotmodel.launch._subst import Sub, SubstContext, parse, parse_xacro_command, resolve, resolve_parts, truth
@@ -304,7 +305,14 @@ class _Loader:
             if len(parts) == 1 and isinstance(parts[0], Sub) and parts[0].name == "command" and parts[0].args:
                 command = resolve_parts(parts[0].args[0], ctx)
                 return [Param(name, xacro=parse_xacro_command(command, ctx), file=scope.path, line=elem.line)]
-            return [Param(name, value=resolve_parts(parts, ctx), file=scope.path, line=elem.line)]
+            value = resolve_parts(parts, ctx)
+            typed = None
+            if scope.dialect is Dialect.ROS1:
+                try:
+                    typed = ros1_param_text(value, self._attr(scope, elem, "type"))
+                except ValueError as exc:
+                    raise ctx.error(f"<param name=\"{name}\">: {exc}") from None
+            return [Param(name, value=value, file=scope.path, line=elem.line, typed=typed)]
         textfile = self._attr(scope, elem, "textfile")
         if textfile is not None:
             path = Path(textfile)

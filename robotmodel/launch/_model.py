@@ -36,7 +36,9 @@ class XacroSource:
 class Param:
     """One parameter: a literal ``value``, the contents of ``textfile``, or xacro's output.
 
-    ``file`` and ``line`` say where it was set (for messages).
+    ``file`` and ``line`` say where it was set (for messages). ``typed`` is the value as a
+    ``-p`` value's YAML text where the launch system fixes its type (ROS 1's ``type``
+    attribute and its guess without one); None: ``value`` as written.
     """
 
     name: str
@@ -45,6 +47,7 @@ class Param:
     xacro: XacroSource | None = None
     file: Path | None = None
     line: int = 0
+    typed: str | None = None
 
 
 @dataclass(frozen=True)

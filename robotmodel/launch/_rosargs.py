@@ -53,7 +53,8 @@ def ros_tail(spec: ProcessSpec, node: NodeDecl, consumed: frozenset[str], notes:
             notes.append(f"{param.file}:{param.line}: parameter '{key}' of {node.full_name} not passed on "
                          "(only plain values with ROS 2 parameter names are)")
             continue
-        ordered.append((param.line, ["-p", f"{key}:={param.value or _EMPTY}"]))
+        value = param.typed if param.typed is not None else param.value
+        ordered.append((param.line, ["-p", f"{key}:={value or _EMPTY}"]))
     ordered += [(line, ["--params-file", str(path)]) for path, line in node.param_files]
     for _, pair in sorted(ordered, key=lambda item: item[0]):
         words += pair
