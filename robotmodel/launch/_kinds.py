@@ -15,7 +15,8 @@ xacro command becomes ``FILE name:=value ...`` so the command expands it itself.
 What ROS hands a node on its command line follows in one ``--ros-args`` block, as
 launch_ros writes it: ``-r __node:=NAME`` (a name the file gave, unless it is the
 command's own), ``-r __ns:=/NS`` (outside the root namespace), ``-p name:=value`` for each
-parameter not mapped onto a flag above, ``--params-file FILE`` for ROS 2's
+parameter not mapped onto a flag above (or set after one of the node's params files:
+a flag would lose to the file, whereas ROS's later value wins), ``--params-file FILE`` for ROS 2's
 ``<param from="FILE"/>`` (these two in the file's order), then the remap rules
 ``-r from:=to`` in the order the node should try them. The command's own parameter
 mapping then decides, and names what it ignores.
@@ -54,14 +55,34 @@ def build_plan(launch: LaunchFile, workdir: Path, *, package_paths: Sequence[Pat
         key = (node.pkg, node.executable)
         label = f"{node.full_name} ({node.pkg}/{node.executable})"
         if key in _RSP | _JSP | _JSP_GUI | _STATIC | _RVIZ:
-            spec = mapper.map(node, key)
+            late = _after_params_file(node, key)
+            flagged = replace(node, params={k: v for k, v in node.params.items() if k not in late})
+            spec = mapper.map(flagged, key)
             if isinstance(spec, str):
                 plan.skipped.append(f"{label}: {spec}")
                 continue
-            plan.processes.append(ros_tail(spec, node, mapper.consumed(node, key), plan.notes))
+            plan.processes.append(ros_tail(spec, node, mapper.consumed(flagged, key) - late, plan.notes))
         else:
             plan.skipped.append(f"{label}: no robotmodel equivalent, not started")
     return plan
+
+
+def _after_params_file(node: NodeDecl, key: tuple[str, str]) -> frozenset[str]:
+    """The flag-mapped parameters set after one of the node's params files.
+
+    A flag is only the command's default, which any params file overrides; such a parameter
+    travels as ``-p`` after the file instead, so the later one wins as in ROS.
+    """
+    if not node.param_files:
+        return frozenset()
+    first = min(line for _, line in node.param_files)
+    if key in _RSP:
+        names = {"publish_frequency", "frame_prefix", "ignore_timestamp"}
+    elif key in _JSP and not _flag(node, "use_gui"):
+        names = {"rate", "source_list", "zeros"} | {n for n in node.params if n.startswith("zeros.")}
+    else:
+        return frozenset()
+    return frozenset(n for n in names if n in node.params and node.params[n].line > first)
 
 
 class _Mapper:
