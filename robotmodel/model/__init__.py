@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from robotmodel.model._load import load
 from robotmodel.model._parse import parse_urdf
+from robotmodel.model._robot import RobotDescription
 from robotmodel.model._types import (
     RGBA,
     Box,
@@ -21,7 +22,6 @@ from robotmodel.model._types import (
     Mesh,
     Mimic,
     Pose,
-    RobotDescription,
     SafetyController,
     Sphere,
     Vec3,

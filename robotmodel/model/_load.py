@@ -22,7 +22,7 @@ from pathlib import Path
 
 from robotmodel.errors import URDFError
 from robotmodel.model._parse import parse_located, parse_urdf
-from robotmodel.model._types import RobotDescription
+from robotmodel.model._robot import RobotDescription
 
 __all__ = ["is_xacro", "load"]
 

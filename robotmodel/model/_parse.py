@@ -16,6 +16,7 @@ from robotmodel.model._locate import locate
 from robotmodel.model._numbers import num as _num
 from robotmodel.model._numbers import vec as _vec
 from robotmodel.model._numbers import vec3 as _vec3
+from robotmodel.model._robot import RobotDescription
 from robotmodel.model._types import (
     Box,
     Collision,
@@ -32,7 +33,6 @@ from robotmodel.model._types import (
     Mesh,
     Mimic,
     Pose,
-    RobotDescription,
     SafetyController,
     Sphere,
     Vec3,

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import xml.etree.ElementTree as ET
 
+from robotmodel.model._robot import RobotDescription
 from robotmodel.model._types import (
     Box,
     Cylinder,
@@ -13,7 +14,6 @@ from robotmodel.model._types import (
     Material,
     Mesh,
     Pose,
-    RobotDescription,
     Sphere,
 )
 

@@ -1,7 +1,7 @@
 """CDR encoding of messages (the payload of ROS 2 topics and bags), through rosbags.
 
 TFMessage takes a hand-written path with the same bytes; every other type goes through
-rosbags' generated (de)serializers.
+rosbags' generated (de)serializers (:mod:`._generic_cdr`).
 """
 
 from __future__ import annotations
@@ -9,8 +9,8 @@ from __future__ import annotations
 from functools import cache
 from typing import TYPE_CHECKING, Any
 
-from robotmodel.errors import MessageError
-from robotmodel.msgs._convert import Message, from_rosbags, message_class, to_rosbags, typestore
+from robotmodel.msgs._convert import Message, message_class, typestore
+from robotmodel.msgs._generic_cdr import deserialize_generic, msgtype_name, serialize_generic
 from robotmodel.msgs._tfcodec import CannotPack, decode_tfmessage, encode_tfmessage, is_little_endian_cdr
 from robotmodel.msgs.tf2_msgs import TFMessage
 
@@ -20,10 +20,6 @@ if TYPE_CHECKING:
 __all__ = ["deserialize", "serialize", "type_hash"]
 
 _TF = TFMessage.__msgtype__
-
-
-def _msgtype(msgtype: str | type[Any]) -> str:
-    return msgtype if isinstance(msgtype, str) else str(msgtype.__msgtype__)
 
 
 def serialize(msg: Message, store: Typestore | None = None) -> bytes:
@@ -36,13 +32,7 @@ def serialize(msg: Message, store: Typestore | None = None) -> bytes:
             return encode_tfmessage(msg)
         except CannotPack:
             pass  # the generic path below reports the field at fault
-    store = store if store is not None else typestore()
-    msgtype = type(msg).__msgtype__
-    obj = to_rosbags(msg, store)
-    try:
-        return bytes(store.serialize_cdr(obj, msgtype))
-    except UnicodeEncodeError as exc:
-        raise MessageError(f"{msgtype}: a string is not valid UTF-8 ({exc.reason})") from None
+    return serialize_generic(msg, store)
 
 
 def deserialize(data: bytes | bytearray | memoryview, msgtype: str | type[Any], store: Typestore | None = None) -> Any:
@@ -52,16 +42,7 @@ def deserialize(data: bytes | bytearray | memoryview, msgtype: str | type[Any], 
     """
     if store is None and (msgtype is TFMessage or msgtype == _TF) and is_little_endian_cdr(data):
         return decode_tfmessage(data)
-    name = _msgtype(msgtype)
-    message_class(name)  # an unknown type fails here, before decoding
-    store = store if store is not None else typestore()
-    from rosbags.serde import SerdeError
-
-    try:
-        obj = store.deserialize_cdr(data if isinstance(data, bytes | memoryview) else bytes(data), name)
-    except (SerdeError, UnicodeDecodeError) as exc:
-        raise MessageError(f"cannot decode {len(data)} bytes as {name}: {exc}") from None
-    return from_rosbags(obj)
+    return deserialize_generic(data, msgtype, store)
 
 
 @cache
@@ -71,6 +52,6 @@ def _hash(name: str) -> str:
 
 def type_hash(msgtype: str | type[Any]) -> str:
     """REP-2011 type hash of a message type (``RIHS01_<sha256 hex>``), from the Jazzy typestore."""
-    name = _msgtype(msgtype)
+    name = msgtype_name(msgtype)
     message_class(name)
     return _hash(name)

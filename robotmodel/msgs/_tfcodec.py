@@ -21,6 +21,7 @@ from collections.abc import Callable, Iterable, Iterator, Sequence
 from typing import Any, NamedTuple, TypeVar
 
 from robotmodel.errors import MessageError
+from robotmodel.msgs._generic_cdr import deserialize_generic
 from robotmodel.msgs.builtin_interfaces import Time
 from robotmodel.msgs.geometry_msgs import Quaternion, Transform, TransformStamped, Vector3
 from robotmodel.msgs.std_msgs import Header
@@ -159,6 +160,10 @@ def _decode(data: Any, make: Callable[[int, int, str, str, Pose7], T]) -> list[T
             off += 56
     except (struct.error, UnicodeDecodeError) as exc:
         raise MessageError(f"cannot decode tf2_msgs/msg/TFMessage: {exc}") from None
+    if off + 3 < end:
+        # More than alignment padding left over: the count or a length is damaged. rosbags
+        # refuses such bytes for every other type, so the fast path must too.
+        raise MessageError(f"tf2_msgs/msg/TFMessage: {end - off} bytes after the message's end")
     return out
 
 
@@ -186,9 +191,7 @@ def decode_tf_records(data: Any) -> list[TFRecord]:
     """
     if is_little_endian_cdr(data):
         return _decode(data, _make_record)
-    from robotmodel.msgs._cdr import deserialize  # big endian is rare: rosbags reads it
-
-    msg: TFMessage = deserialize(data, TFMessage)
+    msg: TFMessage = deserialize_generic(data, TFMessage)  # big endian is rare: rosbags reads it
     return [_make_record(*item) for item in _message_items(msg.transforms)]
 
 

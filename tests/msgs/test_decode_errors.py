@@ -13,6 +13,9 @@ from rosbags.serde import SerdeError
 
 from robotmodel.errors import MessageError
 from robotmodel.msgs import JointState, TFMessage, deserialize, from_rosbags, make_transform, serialize
+from robotmodel.msgs.builtin_interfaces import Time
+from robotmodel.msgs.geometry_msgs import Transform, TransformStamped
+from robotmodel.msgs.std_msgs import Header
 
 TF = "tf2_msgs/msg/TFMessage"
 
@@ -62,3 +65,15 @@ def test_random_bytes_never_escape_as_other_errors(tail: bytes) -> None:
         for data in (b"\x00\x01\x00\x00" + tail, tail):
             with contextlib.suppress(MessageError):
                 deserialize(data, msgtype)
+
+
+def test_fast_tf_decoder_refuses_bytes_past_the_message_as_rosbags_does() -> None:
+    # Found by the property test above: a count zeroed by damage left 132 bytes unread,
+    # which rosbags refuses ("size mismatch") and the fast path accepted as an empty message.
+    raw = bytearray(serialize(TFMessage([TransformStamped(Header(Time(1, 2), "a"), "b", Transform())])))
+    raw[4:8] = bytes(4)
+    assert _rosbags_decode(bytes(raw)) is None
+    with pytest.raises(MessageError, match="after the message's end"):
+        deserialize(bytes(raw), TFMessage)
+    for pad in range(4):  # alignment padding after the last field is no damage
+        assert deserialize(bytes(serialize(TFMessage([]))) + bytes(pad), TFMessage) == TFMessage([])
