@@ -26,6 +26,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from robotmodel.errors import LaunchError
+from robotmodel.launch._dialect import detect_dialect
 from robotmodel.launch._model import Dialect, NodeDecl, Param
 from robotmodel.launch._ptype import ros1_param_text
 from robotmodel.launch._remaps import Remap, ros1_add, ros1_for_node, ros1_problem
@@ -33,7 +34,7 @@ from robotmodel.launch._rosparam import read_rosparam_file, rosparam_params
 from robotmodel.launch._subst import Sub, SubstContext, parse, parse_xacro_command, resolve, resolve_parts, truth
 from robotmodel.launch._xml import Element, parse_file, where
 
-__all__ = ["LaunchFile", "detect_dialect", "join_ns", "load_launch_file"]
+__all__ = ["LaunchFile", "join_ns", "load_launch_file"]
 
 _MAX_DEPTH = 32
 _IGNORED = frozenset({
@@ -41,7 +42,6 @@ _IGNORED = frozenset({
 })
 _SET_PARAMETER = frozenset({"set_parameter", "set-parameter"})
 _SET_REMAP = frozenset({"set_remap", "set-remap"})
-_ROS2_TAGS = frozenset({"let", "push-ros-namespace", "push_ros_namespace", "executable", "set_env", "set-env"})
 
 
 @dataclass
@@ -74,23 +74,6 @@ def join_ns(base: str, name: str) -> str:
     full = name if name.startswith("/") else base.rstrip("/") + "/" + name
     parts = [p for p in full.split("/") if p]
     return "/" + "/".join(parts)
-
-
-def detect_dialect(path: Path, root: Element) -> Dialect:
-    """ROS 2 for ``*.launch.xml`` or a file using ROS 2-only tags, ``exec=`` or ``$(var``; else ROS 1."""
-    if path.name.endswith(".launch.xml"):
-        return Dialect.ROS2
-    if path.name.endswith(".launch"):
-        return Dialect.ROS1
-    stack = [root]
-    while stack:
-        elem = stack.pop()
-        if elem.tag in _ROS2_TAGS or (elem.tag == "node" and "exec" in elem.attrib):
-            return Dialect.ROS2
-        if any("$(var " in v or "$(find-pkg-share " in v for v in elem.attrib.values()):
-            return Dialect.ROS2
-        stack.extend(elem.children)
-    return Dialect.ROS1
 
 
 def load_launch_file(path: Path, args: Mapping[str, str], package_paths: Sequence[Path] = ()) -> LaunchFile:
@@ -232,7 +215,7 @@ class _Loader:
                 # Neither roslaunch nor launch_ros applies it there: it has to precede the include.
                 self.notes.append(f"{where(scope.path, child.line)}: <{child.tag}> inside <include> ignored")
         root = parse_file(path)
-        dialect = detect_dialect(path, root)
+        dialect = detect_dialect(path, root, scope.dialect)
         ns = join_ns(scope.ns, self._attr(scope, elem, "ns") or "")
         if dialect is Dialect.ROS2:
             configs = scope.args if scope.dialect is Dialect.ROS2 else {}
