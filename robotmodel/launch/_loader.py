@@ -27,11 +27,20 @@ from pathlib import Path
 
 from robotmodel.errors import LaunchError
 from robotmodel.launch._dialect import detect_dialect
-from robotmodel.launch._model import Dialect, NodeDecl, Param
+from robotmodel.launch._model import Dialect, NodeDecl, Param, XacroSource
 from robotmodel.launch._ptype import ros1_param_text
 from robotmodel.launch._remaps import Remap, ros1_add, ros1_for_node, ros1_problem
 from robotmodel.launch._rosparam import read_rosparam_file, rosparam_params
-from robotmodel.launch._subst import Sub, SubstContext, parse, parse_xacro_command, resolve, resolve_parts, truth
+from robotmodel.launch._subst import (
+    Sub,
+    SubstContext,
+    expand_xacro,
+    parse,
+    parse_xacro_command,
+    resolve,
+    resolve_parts,
+    truth,
+)
 from robotmodel.launch._xml import Element, parse_file, where
 
 __all__ = ["LaunchFile", "join_ns", "load_launch_file"]
@@ -93,6 +102,7 @@ class _Loader:
         self.params: dict[str, Param] = {}
         self.skipped: list[str] = []
         self.notes: list[str] = []
+        self.expanded: set[XacroSource] = set()
 
     def load_top(self, path: Path, args: dict[str, str]) -> None:
         root = parse_file(path)
@@ -286,8 +296,7 @@ class _Loader:
         if raw_value is not None:
             parts = parse(raw_value, ctx)
             if len(parts) == 1 and isinstance(parts[0], Sub) and parts[0].name == "command" and parts[0].args:
-                command = resolve_parts(parts[0].args[0], ctx)
-                return [Param(name, xacro=parse_xacro_command(command, ctx), file=scope.path, line=elem.line)]
+                return [self._xacro_param(name, resolve_parts(parts[0].args[0], ctx), ctx)]
             value = resolve_parts(parts, ctx)
             typed = None
             if scope.dialect is Dialect.ROS1:
@@ -304,11 +313,21 @@ class _Loader:
             return [Param(name, textfile=path.resolve(), file=scope.path, line=elem.line)]
         command_text = self._attr(scope, elem, "command")
         if command_text is not None:
-            return [Param(name, xacro=parse_xacro_command(command_text, ctx), file=scope.path, line=elem.line)]
+            return [self._xacro_param(name, command_text, ctx)]
         if "binfile" in elem.attrib or "from" in elem.attrib:
             self.notes.append(f"{where(scope.path, elem.line)}: <param name=\"{name}\"> from a file ignored")
             return []
         raise ctx.error(f"<param name=\"{name}\"> needs value, textfile or command")
+
+    def _xacro_param(self, name: str, command: str, ctx: SubstContext) -> Param:
+        source = parse_xacro_command(command, ctx)
+        # roslaunch runs a <param command> while it reads the file, ros2 launch a $(command) as
+        # the node starts: either way a xacro that fails ends the launch before anything runs.
+        # The nodes expand it again themselves; it is checked here once per distinct command.
+        if source not in self.expanded:
+            expand_xacro(command, source, ctx, name)
+            self.expanded.add(source)
+        return Param(name, xacro=source, file=ctx.path, line=ctx.line)
 
     def _params_file(self, scope: _Scope, elem: Element, files: list[tuple[Path, int]]) -> None:
         # launch_ros makes it absolute without resolving links (the node sees the path as written).

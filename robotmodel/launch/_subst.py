@@ -29,7 +29,7 @@ from robotmodel.launch._model import Dialect, XacroSource
 from robotmodel.launch._ptype import auto_value
 from robotmodel.launch._syntax import Sub, SubstContext, parse
 
-__all__ = ["Sub", "SubstContext", "parse", "parse_xacro_command", "resolve", "resolve_parts", "truth"]
+__all__ = ["Sub", "SubstContext", "expand_xacro", "parse", "parse_xacro_command", "resolve", "resolve_parts", "truth"]
 
 
 def resolve(text: str, ctx: SubstContext) -> str:
@@ -216,11 +216,27 @@ def _eval2(sub: Sub, words: list[str], ctx: SubstContext) -> str:
 
 
 def _command(sub: Sub, words: list[str], ctx: SubstContext) -> str:
+    _count(sub, words, ctx, 1, 2)
+    return expand_xacro(words[0], parse_xacro_command(words[0], ctx), ctx)
+
+
+def expand_xacro(command: str, source: XacroSource, ctx: SubstContext, param: str = "") -> str:
+    """The output of xacro for ``source`` (read from ``command``), expanded in-process.
+
+    A failure raises LaunchError with xacro's error on one line, in the launch system's
+    words: ROS 2's ``$(command)`` ("executed command failed"), roslaunch's ``<param
+    command>`` of parameter ``param`` ("Cannot load command parameter").
+    """
     from robotmodel.xacro import expand
 
-    _count(sub, words, ctx, 1, 2)
-    source = parse_xacro_command(words[0], ctx)
-    return expand(source.file, dict(source.mappings), package_paths=ctx.package_paths)
+    try:
+        return expand(source.file, dict(source.mappings), package_paths=ctx.package_paths)
+    except RobotModelError as exc:
+        reason = " ".join(str(exc).splitlines())
+    if ctx.dialect is Dialect.ROS2:
+        raise ctx.error(f"executed command failed. Command: {command} Captured stderr output: {reason}")
+    raise ctx.error(f"Invalid <param> tag: Cannot load command parameter [{param}]: command [{command}] failed: "
+                    f"{reason}")
 
 
 def _not(sub: Sub, words: list[str], ctx: SubstContext) -> str:
