@@ -23,6 +23,7 @@ LAUNCH = {
           <param name="robot_description" command="$(find xacro)/xacro $(find probe_description)/urdf/broken.urdf.xacro"/>
           <node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>
           <node pkg="joint_state_publisher" type="joint_state_publisher" name="jsp"/>
+          <node pkg="rviz" type="rviz" name="rviz"/>
         </launch>
     """, "Invalid <param> tag: Cannot load command parameter [robot_description]: command ["),
     "ros2": ("broken.launch.xml", """
@@ -71,7 +72,8 @@ def test_run_exits_1_and_starts_nothing(pkg, live, capsys, dialect):
     path, _ = broken(pkg, dialect)
     expected = xacro_error(pkg, capsys)
     proc = live.robotmodel("launch", "--no-browser", "--package-path", str(pkg.root), str(path))
-    # Before: the publishers started and the launcher waited for a robot_description forever.
+    # Before: the nodes started; the publishers died on the xacro error while the viewer (ROS 1)
+    # or joint_state_publisher (ROS 2) waited for a robot_description, and the launch never ended.
     proc.wait_for(lambda: proc.popen.poll() is not None, 60, "launch exits")
     assert proc.stop() == 1
     assert not any("started with pid" in line for line in proc.err + proc.out), proc.err
