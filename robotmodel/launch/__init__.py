@@ -1,9 +1,12 @@
 """ROS launch files without ROS: the description-package subset of ROS 1 and ROS 2 launch XML.
 
-- :func:`load_launch_file`: read a file (either dialect) with ``name:=value`` arguments into
-  its nodes and parameters (:class:`LaunchFile`); ``$(arg)``, ``$(var)``, ``$(find)``,
-  ``$(find-pkg-share)``, ``$(eval)`` (a safe subset), ``$(env)``/``$(optenv)``,
-  ``$(dirname)`` and xacro's ``$(command)`` are resolved, includes and groups followed.
+- :func:`load_launch_file`: read a file (either dialect, told from its content: a ROS 1
+  include named ``*.launch.xml`` is ROS 1) with ``name:=value`` arguments into its nodes and
+  parameters (:class:`LaunchFile`); ``$(arg)``, ``$(var)``, ``$(find)``,
+  ``$(find-pkg-share)``, ``$(eval)`` (a safe subset; ROS 1 args typed as roslaunch types
+  them), ``$(env)``/``$(optenv)``, ``$(dirname)`` and xacro's ``$(command)`` are resolved,
+  includes and groups followed. Each xacro description is expanded once while reading, as
+  roslaunch and ros2 launch do, so a failing one is an error before anything starts.
 - :func:`build_plan`: the ``robotmodel`` commands standing in for those nodes
   (:class:`LaunchPlan` of :class:`ProcessSpec`), other nodes listed as skipped; each with
   the node's name, namespace, parameters and remap rules as a ``--ros-args`` block.

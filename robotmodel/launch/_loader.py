@@ -26,14 +26,24 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from robotmodel.errors import LaunchError
-from robotmodel.launch._model import Dialect, NodeDecl, Param
+from robotmodel.launch._dialect import detect_dialect
+from robotmodel.launch._model import Dialect, NodeDecl, Param, XacroSource
 from robotmodel.launch._ptype import ros1_param_text
 from robotmodel.launch._remaps import Remap, ros1_add, ros1_for_node, ros1_problem
 from robotmodel.launch._rosparam import read_rosparam_file, rosparam_params
-from robotmodel.launch._subst import Sub, SubstContext, parse, parse_xacro_command, resolve, resolve_parts, truth
+from robotmodel.launch._subst import (
+    Sub,
+    SubstContext,
+    expand_xacro,
+    parse,
+    parse_xacro_command,
+    resolve,
+    resolve_parts,
+    truth,
+)
 from robotmodel.launch._xml import Element, parse_file, where
 
-__all__ = ["LaunchFile", "detect_dialect", "join_ns", "load_launch_file"]
+__all__ = ["LaunchFile", "join_ns", "load_launch_file"]
 
 _MAX_DEPTH = 32
 _IGNORED = frozenset({
@@ -41,7 +51,6 @@ _IGNORED = frozenset({
 })
 _SET_PARAMETER = frozenset({"set_parameter", "set-parameter"})
 _SET_REMAP = frozenset({"set_remap", "set-remap"})
-_ROS2_TAGS = frozenset({"let", "push-ros-namespace", "push_ros_namespace", "executable", "set_env", "set-env"})
 
 
 @dataclass
@@ -76,23 +85,6 @@ def join_ns(base: str, name: str) -> str:
     return "/" + "/".join(parts)
 
 
-def detect_dialect(path: Path, root: Element) -> Dialect:
-    """ROS 2 for ``*.launch.xml`` or a file using ROS 2-only tags, ``exec=`` or ``$(var``; else ROS 1."""
-    if path.name.endswith(".launch.xml"):
-        return Dialect.ROS2
-    if path.name.endswith(".launch"):
-        return Dialect.ROS1
-    stack = [root]
-    while stack:
-        elem = stack.pop()
-        if elem.tag in _ROS2_TAGS or (elem.tag == "node" and "exec" in elem.attrib):
-            return Dialect.ROS2
-        if any("$(var " in v or "$(find-pkg-share " in v for v in elem.attrib.values()):
-            return Dialect.ROS2
-        stack.extend(elem.children)
-    return Dialect.ROS1
-
-
 def load_launch_file(path: Path, args: Mapping[str, str], package_paths: Sequence[Path] = ()) -> LaunchFile:
     """Read ``path`` with command-line ``args``; raises LaunchError (``FILE:LINE: ...``) on bad input."""
     loader = _Loader(package_paths)
@@ -110,6 +102,7 @@ class _Loader:
         self.params: dict[str, Param] = {}
         self.skipped: list[str] = []
         self.notes: list[str] = []
+        self.expanded: set[XacroSource] = set()
 
     def load_top(self, path: Path, args: dict[str, str]) -> None:
         root = parse_file(path)
@@ -232,7 +225,7 @@ class _Loader:
                 # Neither roslaunch nor launch_ros applies it there: it has to precede the include.
                 self.notes.append(f"{where(scope.path, child.line)}: <{child.tag}> inside <include> ignored")
         root = parse_file(path)
-        dialect = detect_dialect(path, root)
+        dialect = detect_dialect(path, root, scope.dialect)
         ns = join_ns(scope.ns, self._attr(scope, elem, "ns") or "")
         if dialect is Dialect.ROS2:
             configs = scope.args if scope.dialect is Dialect.ROS2 else {}
@@ -303,8 +296,7 @@ class _Loader:
         if raw_value is not None:
             parts = parse(raw_value, ctx)
             if len(parts) == 1 and isinstance(parts[0], Sub) and parts[0].name == "command" and parts[0].args:
-                command = resolve_parts(parts[0].args[0], ctx)
-                return [Param(name, xacro=parse_xacro_command(command, ctx), file=scope.path, line=elem.line)]
+                return [self._xacro_param(name, resolve_parts(parts[0].args[0], ctx), ctx)]
             value = resolve_parts(parts, ctx)
             typed = None
             if scope.dialect is Dialect.ROS1:
@@ -321,11 +313,21 @@ class _Loader:
             return [Param(name, textfile=path.resolve(), file=scope.path, line=elem.line)]
         command_text = self._attr(scope, elem, "command")
         if command_text is not None:
-            return [Param(name, xacro=parse_xacro_command(command_text, ctx), file=scope.path, line=elem.line)]
+            return [self._xacro_param(name, command_text, ctx)]
         if "binfile" in elem.attrib or "from" in elem.attrib:
             self.notes.append(f"{where(scope.path, elem.line)}: <param name=\"{name}\"> from a file ignored")
             return []
         raise ctx.error(f"<param name=\"{name}\"> needs value, textfile or command")
+
+    def _xacro_param(self, name: str, command: str, ctx: SubstContext) -> Param:
+        source = parse_xacro_command(command, ctx)
+        # roslaunch runs a <param command> while it reads the file, ros2 launch a $(command) as
+        # the node starts: either way a xacro that fails ends the launch before anything runs.
+        # The nodes expand it again themselves; it is checked here once per distinct command.
+        if source not in self.expanded:
+            expand_xacro(command, source, ctx, name)
+            self.expanded.add(source)
+        return Param(name, xacro=source, file=ctx.path, line=ctx.line)
 
     def _params_file(self, scope: _Scope, elem: Element, files: list[tuple[Path, int]]) -> None:
         # launch_ros makes it absolute without resolving links (the node sees the path as written).

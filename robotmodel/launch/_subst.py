@@ -7,8 +7,10 @@ ROS 2 (launch frontends): ``var``, ``find-pkg-share``, ``find-pkg-prefix``, ``fi
 
 ROS 2 groups an argument with spaces in single (or double) quotes; ROS 1 has no quoting,
 and ``optenv``'s default is the rest of the words. ``$(eval ...)`` takes its text raw up to
-the matching parenthesis: in ROS 1 launch args are its variables (and ``arg()``/``find()``
-... its functions), in ROS 2 the text is substituted first, then evaluated with math's names.
+the matching parenthesis: in ROS 1 launch args are its variables and ``arg()`` returns them,
+typed as roslaunch's ``convert_value(value, 'auto')`` types them (``'false'`` is False,
+``'0.5'`` is 0.5), beside ``find()``/``env()``/... and math's names; in ROS 2 the text is
+substituted first, then evaluated with math's names. Either writes back Python's ``str()``.
 """
 
 from __future__ import annotations
@@ -24,9 +26,10 @@ from typing import Any
 from robotmodel.errors import LaunchError, RobotModelError
 from robotmodel.launch._eval import EvalError, safe_eval
 from robotmodel.launch._model import Dialect, XacroSource
+from robotmodel.launch._ptype import auto_value
 from robotmodel.launch._syntax import Sub, SubstContext, parse
 
-__all__ = ["Sub", "SubstContext", "parse", "parse_xacro_command", "resolve", "resolve_parts", "truth"]
+__all__ = ["Sub", "SubstContext", "expand_xacro", "parse", "parse_xacro_command", "resolve", "resolve_parts", "truth"]
 
 
 def resolve(text: str, ctx: SubstContext) -> str:
@@ -171,8 +174,11 @@ def _text(value: Any) -> str:
 
 def _eval1(sub: Sub, words: list[str], ctx: SubstContext) -> str:
     del words
+    # As roslaunch's _eval: arg('x') and a bare x give the arg typed by convert_value(..., 'auto'),
+    # so 'false' is False and '0.5' is 0.5. A bare name is looked up among the functions,
+    # true/false and math's names first, then among the args.
     functions: dict[str, Callable[..., Any]] = {
-        "arg": lambda n: _lookup(str(n), ctx),
+        "arg": lambda n: auto_value(_lookup(str(n), ctx)),
         "find": lambda p: _find(Sub("find", (), p), [str(p)], ctx),
         "env": lambda v: _env(Sub("env", (), v), [str(v)], ctx),
         "optenv": lambda v, d="": os.environ.get(str(v), str(d)),
@@ -181,28 +187,16 @@ def _eval1(sub: Sub, words: list[str], ctx: SubstContext) -> str:
     }
     if "__" in sub.raw:
         raise ctx.error("$(eval ...) may not contain double underscore expressions")
-    names: dict[str, Any] = {"true": True, "false": False}
-    names.update({k: _typed(v) for k, v in ctx.args.items() if v is not None})
+    math_names = {k: v for k, v in vars(math).items() if not k.startswith("_")}
+    names: dict[str, Any] = {k: auto_value(v) for k, v in ctx.args.items() if v is not None}
+    names.update({"true": True, "false": False, "True": True, "False": False}, **math_names, **functions)
+    callables = {k: v for k, v in math_names.items() if callable(v)} | functions
     try:
-        result = safe_eval(sub.raw, names, functions)
+        result = safe_eval(sub.raw, names, callables)
     except EvalError as exc:
         raise ctx.error(f"$(eval {sub.raw}): {exc}") from None
-    # roslaunch writes Python's str(): True/False.
+    # roslaunch writes Python's str(): True/False, 6.283.
     return str(result)
-
-
-def _typed(value: str) -> Any:
-    # roslaunch offers args to eval by bare name typed as its 'auto' parameter type does:
-    # int, else float, else true/false as booleans, else the string.
-    for kind in (int, float):
-        try:
-            return kind(value)
-        except ValueError:
-            pass
-    low = value.strip().lower()
-    if low in ("true", "false"):
-        return low == "true"
-    return value
 
 
 def _eval2(sub: Sub, words: list[str], ctx: SubstContext) -> str:
@@ -222,11 +216,27 @@ def _eval2(sub: Sub, words: list[str], ctx: SubstContext) -> str:
 
 
 def _command(sub: Sub, words: list[str], ctx: SubstContext) -> str:
+    _count(sub, words, ctx, 1, 2)
+    return expand_xacro(words[0], parse_xacro_command(words[0], ctx), ctx)
+
+
+def expand_xacro(command: str, source: XacroSource, ctx: SubstContext, param: str = "") -> str:
+    """The output of xacro for ``source`` (read from ``command``), expanded in-process.
+
+    A failure raises LaunchError with xacro's error on one line, in the launch system's
+    words: ROS 2's ``$(command)`` ("executed command failed"), roslaunch's ``<param
+    command>`` of parameter ``param`` ("Cannot load command parameter").
+    """
     from robotmodel.xacro import expand
 
-    _count(sub, words, ctx, 1, 2)
-    source = parse_xacro_command(words[0], ctx)
-    return expand(source.file, dict(source.mappings), package_paths=ctx.package_paths)
+    try:
+        return expand(source.file, dict(source.mappings), package_paths=ctx.package_paths)
+    except RobotModelError as exc:
+        reason = " ".join(str(exc).splitlines())
+    if ctx.dialect is Dialect.ROS2:
+        raise ctx.error(f"executed command failed. Command: {command} Captured stderr output: {reason}")
+    raise ctx.error(f"Invalid <param> tag: Cannot load command parameter [{param}]: command [{command}] failed: "
+                    f"{reason}")
 
 
 def _not(sub: Sub, words: list[str], ctx: SubstContext) -> str:

@@ -56,3 +56,46 @@ def test_refuses(text, reason):
 def test_deep_nesting_is_an_error_not_a_crash(text):
     with pytest.raises(EvalError, match=r"invalid expression|too deep"):
         safe_eval(text, {}, {})
+
+
+# -- ROS 1 $(eval): the args typed as roslaunch types them ---------------------------------------------
+# roslaunch's _eval hands arg('x') and a bare x over as convert_value(value, 'auto'): a float
+# when the text holds '.', else an int (none with '_'), else true/false in any case as a
+# bool, else the text; a bare name is looked up among its functions, true/false and math's
+# names before the args. It writes the result back with Python's str(). The expected texts
+# are Python computing on the values so typed.
+@pytest.mark.parametrize(("args", "expr", "expected"), [
+    ({"radius": "0.5"}, "2 * 3.1415 * arg('radius')", str(2 * 3.1415 * 0.5)),
+    ({"radius": "0.5"}, "2 * radius", str(2 * 0.5)),
+    ({"n": "3"}, "arg('n') + 1", str(3 + 1)),
+    ({"gui": "false"}, "not arg('gui')", str(not False)),
+    ({"gui": "False"}, "arg('gui') == False", str(True)),
+    ({"gui": "TRUE"}, "gui and 1", str(True and 1)),
+    ({"e": "1e3"}, "arg('e') + 'x'", "1e3" + "x"),
+    ({"u": "1_000"}, "arg('u') + '!'", "1_000" + "!"),
+    ({"name": "robot"}, "arg('name') + '_1'", "robot" + "_1"),
+    ({"pi": "3"}, "pi", str(math.pi)),
+    ({}, "sin(pi / 2) + floor(2.5)", str(math.sin(math.pi / 2) + math.floor(2.5))),
+])
+def test_ros1_eval_types_args_as_roslaunch(pkg, args, expr, expected):
+    from robotmodel.launch import load_launch_file
+
+    declared = "".join(f'<arg name="{k}"/>' for k in args)
+    path = pkg.launch("eval.launch", f'<launch>{declared}<param name="out" value="$(eval {expr})"/></launch>')
+    assert load_launch_file(path, args, [pkg.root]).params["/out"].value == expected
+
+
+@pytest.mark.parametrize(("gui", "started"), [("false", ["no_gui"]), ("true", ["gui"])])
+def test_ros1_eval_not_arg_false_chooses_the_right_nodes(pkg, gui, started):
+    from robotmodel.launch import load_launch_file
+
+    path = pkg.launch("gui.launch", """
+        <launch>
+          <arg name="gui" default="true"/>
+          <node pkg="tf" type="static_transform_publisher" name="gui" args="0 0 0 0 0 0 a b 100"
+                if="$(eval arg('gui'))"/>
+          <node pkg="tf" type="static_transform_publisher" name="no_gui" args="0 0 0 0 0 0 a c 100"
+                if="$(eval not arg('gui'))"/>
+        </launch>
+    """)
+    assert [n.name for n in load_launch_file(path, {"gui": gui}, [pkg.root]).nodes] == started

@@ -2,7 +2,9 @@
 
 Expected values from roslaunch's documented rules: ``str``/``string`` keep the text,
 ``int``/``double``/``float`` convert it, ``bool``/``boolean`` take true/1/false/0 in any case,
-``yaml`` parses it; with no type an int, else a float, else true/false (any case), else text.
+``yaml`` parses it; with no type roslaunch's ``convert_value(value.strip(), 'auto')``: a float
+when the text holds '.', else an int (none with '_'), else true/false (any case), else text,
+so ``1e3`` stays text. A string rcl would read as a number or bool goes quoted.
 """
 
 from __future__ import annotations
@@ -44,12 +46,15 @@ def test_ros1_param_type_attribute_decides_the_value(pkg, tmp_path):
 def test_ros1_param_without_type_is_guessed(pkg, tmp_path):
     assert params_of(pkg, tmp_path, """
         <param name="i" value="5"/>
-        <param name="f" value="1e3"/>
+        <param name="f" value=" 2.5 "/>
+        <param name="e" value="1e3"/>
+        <param name="u" value="1_000"/>
         <param name="b" value="False"/>
         <param name="s" value="yes"/>
+        <param name="y" value="y"/>
         <param name="n" value="null"/>
         <param name="one" value="1"/>
-    """) == ["i:=5", "f:=1000.0", "b:=false", "s:='yes'", "n:='null'", "one:=1"]
+    """) == ["i:=5", "f:=2.5", "e:='1e3'", "u:='1_000'", "b:=false", "s:='yes'", "y:='y'", "n:='null'", "one:=1"]
 
 
 @pytest.mark.parametrize(("ptype", "value"), [("bool", "2"), ("int", "1.5"), ("double", "x")])
