@@ -131,9 +131,10 @@ class _Undeclare(Handle):
 
 
 class _Publisher(RawPublisher):
-    def __init__(self, backend: ZenohSession, pub: Any) -> None:
+    def __init__(self, backend: ZenohSession, pub: Any, probe: Any = None) -> None:
         self._backend = backend
         self._pub: Any = pub
+        self._probe: Any = probe
         self._put = pub.put
 
     def put(self, payload: bytes, attachment: bytes) -> None:
@@ -146,17 +147,17 @@ class _Publisher(RawPublisher):
         pub = self._pub
         if pub is None:
             return False
-        status = getattr(pub, "matching_status", None)
-        # zenoh-python's AdvancedPublisher does not report matching; a latched publisher's
-        # cache serves subscribers whenever they come, so it counts as matched.
-        return True if status is None else bool(status.matching)
+        return bool((self._probe or pub).matching_status.matching)
 
     def close(self) -> None:
         pub, self._pub = self._pub, None
+        probe, self._probe = self._probe, None
         if pub is not None:
             self._backend._forget(self)
             if not self._backend.closed:
                 pub.undeclare()
+                if probe is not None:
+                    probe.undeclare()
 
 
 class ZenohSession:
@@ -215,15 +216,19 @@ class ZenohSession:
             "reliability": zenoh.Reliability.RELIABLE if reliable else zenoh.Reliability.BEST_EFFORT,
         }
         pub: Any
+        probe: Any = None
         if q.transient_local:
             pub = zx.declare_advanced_publisher(
                 self._session, key, cache=zx.CacheConfig(q.depth), publisher_detection=True,
                 sample_miss_detection=zx.MissDetectionConfig(heartbeat=None, sporadic_heartbeat=_HEARTBEAT_S)
                 if reliable else None,
                 **common)
+            # zenoh-python's AdvancedPublisher reports no matching; a plain publisher on the
+            # same key that never puts does, and sends nothing.
+            probe = self._session.declare_publisher(key)
         else:
             pub = self._session.declare_publisher(key, **common)
-        handle = _Publisher(self, pub)
+        handle = _Publisher(self, pub, probe)
         self._track(handle)
         return handle
 
