@@ -39,9 +39,10 @@ none: a reliable keep-all publisher blocks rather than drop). QoS, per policy:
 
 - reliability: RELIABLE or BEST_EFFORT (ROS 1 is always reliable, TCP);
 - durability: TRANSIENT_LOCAL keeps the last ``depth`` samples and gives them to every
-  subscription matched later that asks for them (a transient-local subscription; ROS 1:
-  ``latch=True``, served to every late subscriber); VOLATILE subscriptions never get a
-  sample published before they matched;
+  subscription matched later that asks for them (a transient-local subscription); VOLATILE
+  subscriptions never get a sample published before they matched. ROS 1 has durability on
+  the publisher only (``latch=True``, its last sample to every new subscriber), so there a
+  volatile subscription gets the latched sample too, as rospy's does;
 - history and depth: KEEP_LAST(depth) or KEEP_ALL.
 
 Subscribing. :meth:`NodeHandle.declare_subscription` (topic, type or None for any type,
@@ -253,6 +254,10 @@ class ParameterStore(ABC):
     @abstractmethod
     def names(self) -> list[str]:
         """Every name set, sorted."""
+
+    def search(self, name: str) -> str | None:
+        """The name under which ``name`` is found, or None (ROS 1 searches up the namespace)."""
+        return name if self.has(name) else None
 
 
 class LocalParameters(ParameterStore):

@@ -4,7 +4,8 @@ Every case takes the ``wire`` fixture and runs once per entry of :data:`WIRES`. 
 (ROS 1, DDS) adds itself there with what differs: whether it has processes (its peers
 are then real child processes, killed with -9 in the killed-peer case), which QoS rules it
 matches by (``"dds"``: rmw_dds_common's; ``"none"``: every pair matches, as rmw_zenoh and
-ROS 1), and whether parameters are node-local or a shared server.
+ROS 1), whether parameters are node-local or a shared server, and whether a volatile
+late joiner gets a latched sample (ROS 1 does).
 """
 
 from __future__ import annotations
@@ -31,13 +32,17 @@ class WireSpec:
     processes: bool
     qos_rules: str  # "dds" or "none"
     parameters: str  # "node" (node-local) or "server" (ROS 1's parameter server)
+    # ROS 1 latches for every subscriber: a volatile late joiner gets the latched sample there.
+    volatile_gets_latched: bool
     # How long the graph may take to show a peer, or to lose a killed one.
     graph_deadline_s: float
 
 
 WIRES = [
-    WireSpec("inprocess", processes=False, qos_rules="dds", parameters="node", graph_deadline_s=1.0),
-    WireSpec("zenoh", processes=True, qos_rules="none", parameters="node", graph_deadline_s=30.0),
+    WireSpec("inprocess", processes=False, qos_rules="dds", parameters="node", volatile_gets_latched=False,
+             graph_deadline_s=1.0),
+    WireSpec("zenoh", processes=True, qos_rules="none", parameters="node", volatile_gets_latched=False,
+             graph_deadline_s=30.0),
 ]
 
 

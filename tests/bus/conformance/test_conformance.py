@@ -118,7 +118,9 @@ def test_a_volatile_late_joiner_gets_nothing_old(wire: Any, durability: Durabili
     listener.create_subscription(STRING, "/conformance/volatile", got, QoS(10))
     matched(pub, wire)
     pub.publish(String(data="new"))
-    assert datas(got.wait(lambda items: len(items) >= 1, what="new sample")) == ["new"]
+    expected = ["old", "new"] if durability is Durability.TRANSIENT_LOCAL and wire.spec.volatile_gets_latched \
+        else ["new"]
+    assert datas(got.wait(lambda items: len(items) >= len(expected), what="new sample")) == expected
 
 
 # --- QoS compatibility --------------------------------------------------------------------
@@ -295,11 +297,13 @@ def test_namespaces_expand_relative_and_private_names(wire: Any) -> None:
 # --- payloads -----------------------------------------------------------------------------
 
 def test_a_five_megabyte_message_arrives_whole(wire: Any) -> None:
+    # Reliable keep-all: the profile that never drops (rmw_zenoh sends keep-last with congestion
+    # control DROP, which may drop a message this large on a busy machine, as it may in ROS).
     talker = Node("talker", context=wire.context())
-    pub = talker.create_publisher(STRING, "/conformance/large", QoS(10))
+    pub = talker.create_publisher(STRING, "/conformance/large", QoS(0, history=History.KEEP_ALL))
     listener = Node("listener", context=wire.context())
     got = Inbox()
-    listener.create_subscription(STRING, "/conformance/large", got, QoS(10))
+    listener.create_subscription(STRING, "/conformance/large", got, QoS(0, history=History.KEEP_ALL))
     matched(pub, wire)
     big = "".join(chr(ord("a") + i % 26) for i in range(5 * 1024 * 1024))
     pub.publish(String(data=big))
@@ -328,6 +332,7 @@ def test_parameters_hook(wire: Any) -> None:
     a.parameters.set("robot_description", "<robot name='r'/>")
     a.parameters.set("rate", 50)
     assert a.parameters.get("rate") == 50 and a.parameters.has("robot_description")
+    assert a.parameters.search("rate") == "rate" and a.parameters.search("missing") is None
     assert a.parameters.names() == ["rate", "robot_description"]
     a.parameters.delete("rate")
     assert not a.parameters.has("rate")
