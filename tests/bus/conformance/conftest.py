@@ -36,6 +36,9 @@ class WireSpec:
     volatile_gets_latched: bool
     # How long the graph may take to show a peer, or to lose a killed one.
     graph_deadline_s: float
+    # ROS 1's master keeps a killed node's registrations (rosnode cleanup removes them); the
+    # ROS 1 wire must say here whether it prunes nodes whose slave API no longer answers.
+    killed_peer_leaves: bool = True
 
 
 WIRES = [

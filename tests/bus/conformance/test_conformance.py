@@ -218,6 +218,10 @@ def test_a_killed_peer_leaves_the_graph(wire: Any) -> None:
     peer = wire.peer("talker", "doomed", "/")
     assert graph.wait_for(lambda es: any(e.node_name == "doomed" for e in es), wire.spec.graph_deadline_s)
     peer.kill()  # -9 on wires with processes: no goodbye
+    if not wire.spec.killed_peer_leaves:
+        # As ROS 1's master: the registrations stay until cleaned up.
+        assert ("doomed", "/") in observer.get_node_names_and_namespaces()
+        return
     started = time.monotonic()
     assert graph.wait_for(lambda es: not [e for e in es if e.node_name == "doomed"], wire.spec.graph_deadline_s), \
         [e for e in graph.entities() if e.node_name == "doomed"]
