@@ -20,7 +20,7 @@ import time
 import weakref
 from abc import abstractmethod
 from collections.abc import Callable, Sequence
-from typing import Any, NamedTuple
+from typing import Any
 
 import zenoh
 import zenoh.ext as zx
@@ -35,7 +35,7 @@ from robotmodel.bus._config import (
 from robotmodel.bus._qos import QoS, Reliability
 from robotmodel.errors import BusError
 
-__all__ = ["RawPublisher", "RawSample", "ZenohSession", "open_session"]
+__all__ = ["RawCallback", "RawPublisher", "ZenohSession", "open_session"]
 
 log = logging.getLogger("robotmodel.bus")
 # rmw_zenoh's SAMPLE_MISS_DETECTION_HEARTBEAT_PERIOD (500 ms).
@@ -83,15 +83,9 @@ def _linked(session: zenoh.Session, endpoints: Sequence[str], timeout: float = _
     return session
 
 
-class RawSample(NamedTuple):
-    """A received sample as it came off the wire: key, CDR payload, attachment bytes (or None)."""
-
-    key: str
-    payload: bytes
-    attachment: bytes | None
-
-
-RawCallback = Callable[[RawSample], None]
+#: Called with (key, payload, attachment bytes or None) for each sample; plain arguments,
+#: since building any object per sample costs on the receive path.
+RawCallback = Callable[[str, bytes, "bytes | None"], None]
 TokenCallback = Callable[[str, bool], None]
 
 
@@ -240,8 +234,8 @@ class ZenohSession:
 
         def on_sample(sample: zenoh.Sample) -> None:
             att = sample.attachment
-            callback(RawSample(key if exact else str(sample.key_expr), sample.payload.to_bytes(),
-                               None if att is None else att.to_bytes()))
+            callback(key if exact else str(sample.key_expr), sample.payload.to_bytes(),
+                     None if att is None else att.to_bytes())
 
         if q.transient_local:
             sub: Any = self._with_callback_thread(lambda: zx.declare_advanced_subscriber(

@@ -51,7 +51,7 @@ from robotmodel.bus import (
     ros_type_name,
     typestore,
 )
-from robotmodel.bus._attachment import is_attachment
+from robotmodel.bus._attachment import is_attachment, read_attachment
 from robotmodel.bus._config import rendezvous_endpoint
 from robotmodel.bus._qos import DURATION_INFINITE_NS, Durability, History, Liveliness, Reliability
 
@@ -184,12 +184,14 @@ def test_attachment_bytes_by_hand() -> None:
     by_hand = (7).to_bytes(8, "little", signed=True) + (-5).to_bytes(8, "little", signed=True) + b"\x10" + GID
     assert Attachment(7, -5, GID).encode() == by_hand
     assert Attachment.decode(by_hand) == (7, -5, GID)
+    assert read_attachment(by_hand) == (7, -5, GID) and read_attachment(None) is None
 
 
 def test_trailing_bytes_after_the_gid_are_ignored() -> None:
     att = struct.pack("<qqB", 3, 1_700_000_000_000_000_000, 16) + GID + b"\x01\x02\x03\x04"
     assert is_attachment(att)
     assert Attachment.decode(att) == (3, 1_700_000_000_000_000_000, GID)
+    assert read_attachment(att) == (3, 1_700_000_000_000_000_000, GID)
 
 
 def test_labelled_attachment_of_jazzy_before_0_2_4_is_read() -> None:
@@ -206,6 +208,8 @@ def test_labelled_attachment_of_jazzy_before_0_2_4_is_read() -> None:
     # Sequence number 16 puts 0x10 where today's form has its GID length: still labelled.
     old16 = old.replace(struct.pack("<q", 9), struct.pack("<q", 16), 1)
     assert Attachment.decode(old16) == (16, 11, GID)
+    # The receive path's fast reader agrees.
+    assert read_attachment(old) == (9, 11, GID) and read_attachment(old16) == (16, 11, GID)
     # Written, we use only today's form.
     assert len(Attachment(9, 11, GID).encode()) == 33
 
@@ -218,6 +222,7 @@ def test_labelled_attachment_of_jazzy_before_0_2_4_is_read() -> None:
 ])
 def test_attachments_rmw_zenoh_cannot_read_are_refused(att: bytes) -> None:
     assert not is_attachment(att)
+    assert read_attachment(att) is None
     with pytest.raises(BusError):
         Attachment.decode(att)
 
