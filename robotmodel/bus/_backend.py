@@ -47,7 +47,8 @@ none: a reliable keep-all publisher blocks rather than drop). QoS, per policy:
 
 Subscribing. :meth:`NodeHandle.declare_subscription` (topic, type or None for any type,
 QoS, callback) calls ``callback(Sample)`` on a thread of the wire's for each sample, one
-at a time per subscription, in order per publisher. A typed subscription only gets samples
+at a time per subscription, in order per publisher; callbacks of different subscriptions
+may run at the same time (executors that serialize them belong above the seam). A typed subscription only gets samples
 of its type; an untyped one (``ros2 topic echo`` without a type) gets every type on the
 topic, each :class:`Sample` naming its type, and is not announced in the graph. With each
 sample comes a :class:`SampleInfo`: the publisher's 16-byte GID (equal to the
@@ -73,8 +74,9 @@ arrival, and ``callback(key, None)`` for each departure; ``key`` is the wire's u
 for the entity. An :class:`Entity` names its node (name, namespace, enclave and a
 ``node_key`` telling apart nodes that share a name), and for an endpoint the topic, type
 and QoS. The entities of a node whose process dies leave within the wire's liveliness
-deadline (zenoh: when the link drops; ROS 1: when the master or a connection notices;
-in-process: when its session closes).
+deadline (zenoh: when the link drops; DDS: the participant's lease; in-process: when its
+session closes). ROS 1's master keeps a killed node registered until cleaned up (``rosnode
+cleanup``); the ROS 1 wire says whether it prunes nodes whose slave API stops answering.
 
 Parameters. :meth:`NodeHandle.parameters` is the node's parameter store
 (:class:`ParameterStore`: get/set/has/delete/names, names as the node sees them). The
@@ -84,7 +86,9 @@ layer (issue 21). A ROS 1 wire answers with the master's parameter server: names
 against the node's namespace (``~name`` private), ``search`` up the namespace as ROS 1's
 searchParam does, and set/delete visible to every node.
 
-Nothing above this module imports a wire's module; a wire imports nothing above it.
+Nothing above this module imports a wire's module (``tests/bus/test_seam.py`` checks it);
+the wires import only this module and the shared ROS vocabulary (:mod:`._qos`,
+:mod:`._names`, :mod:`._warn`).
 """
 
 from __future__ import annotations

@@ -68,3 +68,11 @@ def test_importing_the_bus_loads_no_wire() -> None:
             " or m == 'robotmodel.bus._inprocess'))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "[]"
+
+
+@pytest.mark.parametrize("module", sorted(WIRE_MODULES))
+def test_a_wire_imports_nothing_of_the_node_layer(module: str) -> None:
+    node_layer = {"_node", "_graph", "_codec", "_remap", "_domain"}
+    found = sorted(m for m in _imports(BUS / f"{module}.py")
+                   if m.startswith("robotmodel.bus.") and m.split(".")[2] in node_layer)
+    assert found == []
