@@ -1,7 +1,9 @@
 """A ROS 2 bus without ROS: zenoh in rmw_zenoh's wire format, with rclpy's shape.
 
 Processes using it talk to each other and to ROS 2 nodes running rmw_zenoh (Jazzy and
-later): the same key expressions, CDR payloads, attachments and liveliness tokens.
+later): the same key expressions, CDR payloads, attachments and liveliness tokens. Nodes
+speak ROS through one backend seam (:mod:`robotmodel.bus._backend`, its contract in the
+docstring), behind which each wire lives: ``"zenoh"`` and ``"inprocess"`` today.
 
 >>> from robotmodel.bus import Node, typestore
 >>> String = typestore().types["std_msgs/msg/String"]   # any class with __msgtype__ works
@@ -18,29 +20,36 @@ Topology (zenoh backend): peers on 127.0.0.1 only, meeting at the well-known por
 ``ZENOH_SESSION_CONFIG_URI``; see :mod:`robotmodel.bus._config`. ``robotmodel router``
 runs a zenoh router for machines to meet. ``ROS_DOMAIN_ID`` picks the domain.
 
-Pieces: :class:`Node` (publishers, subscriptions, graph queries), :class:`Context` (one
-session shared by nodes), :class:`QoS` and tf2_ros's presets, the wire helpers
-(:func:`topic_keyexpr`, :class:`Entity` for liveliness tokens, :class:`Attachment`), and
-:func:`codec_for` / :func:`register_codec` for message classes. ``Node(..., remappings=[...])``
-takes ROS 2 remap rules (:class:`RemapRule`), as ``--ros-args -r`` gives them to rcl.
+Pieces: :class:`Node` (publishers, subscriptions, graph queries, parameters),
+:class:`Context` (one session shared by nodes), :class:`Graph` and its :class:`Entity`
+records, :class:`QoS` and tf2_ros's presets, the seam (:class:`Backend`,
+:func:`open_backend`, :class:`Sample`, :class:`SampleInfo`, :class:`QoSEvent`), the zenoh
+wire's helpers (:func:`topic_keyexpr`, :class:`Token` for liveliness tokens,
+:class:`Attachment`), and :func:`codec_for` / :func:`register_codec` for message classes.
+``Node(..., remappings=[...])`` takes ROS 2 remap rules (:class:`RemapRule`), as ``--ros-args -r`` gives them to rcl.
 """
 
 from __future__ import annotations
 
 from robotmodel.bus._attachment import ATTACHMENT_SIZE, Attachment
-from robotmodel.bus._backend import Backend, RawSample
-from robotmodel.bus._codec import Codec, RosbagsCodec, TFRecords, codec_for, register_codec, typestore
-from robotmodel.bus._graph import Graph
-from robotmodel.bus._names import (
+from robotmodel.bus._backend import (
+    BACKENDS,
+    Backend,
     Entity,
     EntityKind,
-    dds_type_name,
-    gid_of,
-    mangle,
-    resolve_topic,
-    ros_type_name,
-    topic_keyexpr,
+    LocalParameters,
+    MessageType,
+    NodeHandle,
+    ParameterStore,
+    PublisherHandle,
+    QoSEvent,
+    Sample,
+    SampleInfo,
+    open_backend,
 )
+from robotmodel.bus._codec import Codec, RosbagsCodec, TFRecords, codec_for, register_codec, typestore
+from robotmodel.bus._graph import Graph
+from robotmodel.bus._names import dds_type_name, resolve_topic, ros_type_name
 from robotmodel.bus._node import Context, Node, Publisher, RawMessage, Subscription, default_domain_id
 from robotmodel.bus._qos import (
     QOS_DEFAULT,
@@ -52,14 +61,15 @@ from robotmodel.bus._qos import (
     History,
     QoS,
     Reliability,
-    qos_from_keyexpr,
-    qos_to_keyexpr,
+    incompatible_policy,
 )
 from robotmodel.bus._remap import RemapKind, RemapRule, parse_rules, remap_topic
+from robotmodel.bus._zenoh_names import Token, gid_of, mangle, qos_from_keyexpr, qos_to_keyexpr, topic_keyexpr
 from robotmodel.errors import BusError
 
 __all__ = [
     "ATTACHMENT_SIZE",
+    "BACKENDS",
     "QOS_DEFAULT",
     "QOS_LATCHED",
     "QOS_TF",
@@ -75,22 +85,32 @@ __all__ = [
     "EntityKind",
     "Graph",
     "History",
+    "LocalParameters",
+    "MessageType",
     "Node",
+    "NodeHandle",
+    "ParameterStore",
     "Publisher",
+    "PublisherHandle",
     "QoS",
+    "QoSEvent",
     "RawMessage",
-    "RawSample",
     "Reliability",
     "RemapKind",
     "RemapRule",
     "RosbagsCodec",
+    "Sample",
+    "SampleInfo",
     "Subscription",
     "TFRecords",
+    "Token",
     "codec_for",
     "dds_type_name",
     "default_domain_id",
     "gid_of",
+    "incompatible_policy",
     "mangle",
+    "open_backend",
     "parse_rules",
     "qos_from_keyexpr",
     "qos_to_keyexpr",
@@ -101,4 +121,3 @@ __all__ = [
     "topic_keyexpr",
     "typestore",
 ]
-

@@ -18,7 +18,8 @@ from typing import NamedTuple
 
 from robotmodel.errors import BusError
 
-__all__ = ["ATTACHMENT_SIZE", "Attachment", "AttachmentWriter", "is_attachment"]
+__all__ = ["ATTACHMENT_SIZE", "LABELLED_PREFIX", "Attachment", "AttachmentWriter", "is_attachment",
+           "read_attachment", "unpack_attachment"]
 
 _HEAD = struct.Struct("<qqB")
 ATTACHMENT_SIZE = _HEAD.size + 16
@@ -43,6 +44,28 @@ def _labelled(data: bytes) -> tuple[int, int, bytes] | None:
 def is_attachment(data: bytes) -> bool:
     """Whether ``data`` starts with rmw_zenoh's attachment layout (the check on the hot path)."""
     return (len(data) >= ATTACHMENT_SIZE and data[_GID_LEN_OFFSET] == _GID_LEN) or _labelled(data) is not None
+
+
+_unpack_whole = _WHOLE.unpack_from
+#: How the labelled form starts (today's form never does unless its sequence number says so).
+LABELLED_PREFIX = _LABELS[0]
+#: Today's form in one call: (sequence number, source time, GID length, GID); the caller checks
+#: the length (16), the size (>= ATTACHMENT_SIZE) and :data:`LABELLED_PREFIX` first.
+unpack_attachment = _unpack_whole
+
+
+def read_attachment(data: bytes | None) -> tuple[int, int, bytes] | None:
+    """(sequence number, source time, GID) as rmw_zenoh reads them, or None where it drops the sample.
+
+    The receive hot path: one unpack for today's form, :meth:`Attachment.decode` for the rest.
+    """
+    if data is None:
+        return None
+    if len(data) >= ATTACHMENT_SIZE and not data.startswith(_LABELS[0]):
+        seq, stamp, n, gid = _unpack_whole(data)
+        return (seq, stamp, gid) if n == _GID_LEN else None
+    old = _labelled(data)
+    return None if old is None else old
 
 
 class AttachmentWriter:

@@ -1,4 +1,8 @@
-"""Message classes to CDR bytes and back, with the ROS type name and RIHS01 hash the keys need.
+"""Message classes to wire bytes and back, with the ROS type name and RIHS01 hash the wires need.
+
+A codec serves one encoding (MCAP's names: ``"cdr"``, ``"ros1"``); the node layer asks for
+the one its wire declares (:attr:`robotmodel.bus.Backend.encoding`). Only CDR codecs exist
+so far; a ROS 1 wire registers its own with :func:`register_codec`.
 
 :mod:`robotmodel.msgs` classes go through its ``serialize``/``deserialize`` (rosbags, and a
 hand-written TFMessage path with the same bytes); ROS type names mean rosbags' own classes.
@@ -13,6 +17,7 @@ from collections.abc import Callable
 from functools import cache
 from typing import Any
 
+from robotmodel.bus._backend import CDR, MessageType
 from robotmodel.errors import BusError, MessageError
 
 __all__ = [
@@ -38,10 +43,16 @@ class Codec:
     """Turns messages of one ROS type into CDR payloads (with header) and back.
 
     Subclasses set ``typename`` (``pkg/msg/Name``) and implement :meth:`encode` and
-    :meth:`decode`; ``type_hash`` defaults to rosbags' RIHS01 hash of the type.
+    :meth:`decode`; ``type_hash`` defaults to rosbags' RIHS01 hash of the type. ``encoding``
+    is the serialization the codec writes (``"cdr"`` here).
     """
 
     typename: str = ""
+    encoding: str = CDR
+
+    def message_type(self) -> MessageType:
+        """The type as the wires name it (see :class:`robotmodel.bus.MessageType`)."""
+        return MessageType(self.typename, self.type_hash)
 
     @property
     def type_hash(self) -> str:
@@ -195,25 +206,28 @@ def _nested_names(desc: Any) -> list[str]:
 
 
 _TFMESSAGE = "tf2_msgs/msg/TFMessage"
-_registry: dict[Any, Codec] = {}
+_registry: dict[tuple[Any, str], Codec] = {}
 _lock = threading.Lock()
 
 
 def register_codec(msg_type: Any, codec: Codec) -> None:
-    """Use ``codec`` for messages of ``msg_type`` (a class or a ROS type name)."""
+    """Use ``codec`` for messages of ``msg_type`` (a class or a ROS type name) in ``codec.encoding``."""
     with _lock:
-        _registry[msg_type] = codec
+        _registry[(msg_type, codec.encoding)] = codec
 
 
-def codec_for(msg_type: Any) -> Codec:
-    """The codec of a message class (with ``__msgtype__``) or of a ROS type name.
+def codec_for(msg_type: Any, encoding: str = CDR) -> Codec:
+    """The codec of a message class (with ``__msgtype__``) or of a ROS type name, for ``encoding``.
 
     A type name (``'tf2_msgs/msg/TFMessage'``) means rosbags' own message classes.
     """
     with _lock:
-        found = _registry.get(msg_type)
+        found = _registry.get((msg_type, encoding))
     if found is not None:
         return found
+    if encoding != CDR:
+        name = msg_type if isinstance(msg_type, str) else getattr(msg_type, "__msgtype__", repr(msg_type))
+        raise BusError(f"no {encoding} codec for {name} (only CDR codecs are built in)")
     if isinstance(msg_type, str):
         codec: Codec = RosbagsCodec(msg_type)
     else:

@@ -1,45 +1,38 @@
-"""The ROS graph as seen through rmw_zenoh's liveliness tokens: nodes, topics and their types."""
+"""The ROS graph as one session sees it: nodes, topics, types and QoS, from whatever wire it is on."""
 
 from __future__ import annotations
 
 import threading
 from collections.abc import Callable
 
-from robotmodel.bus._backend import Backend, Handle
-from robotmodel.bus._names import ADMIN_SPACE, Entity, EntityKind
-from robotmodel.errors import BusError
+from robotmodel.bus._backend import Backend, Entity, EntityKind, Handle
 
 __all__ = ["Graph"]
 
 
 class Graph:
-    """A live cache of one domain's entities, filled from liveliness tokens.
+    """A live cache of one domain's entities, filled by the wire's :meth:`Backend.watch_graph`.
 
-    It starts with a query for the current tokens and then follows arrivals and
-    departures, as rmw_zenoh's graph cache does.
+    It starts with the entities the wire knows and then follows arrivals and departures,
+    as rmw's graph caches do.
     """
 
-    def __init__(self, backend: Backend, domain_id: int, timeout: float = 1.0) -> None:
+    def __init__(self, backend: Backend) -> None:
         self._lock = threading.Condition()
         self._entities: dict[str, Entity] = {}
         self._by_gid: dict[bytes, Entity] = {}
-        pattern = f"{ADMIN_SPACE}/{domain_id}/**"
-        self._watch: Handle = backend.watch_tokens(pattern, self._on_token)
-        for token in backend.get_tokens(pattern, timeout):
-            self._on_token(token, True)
+        self._watch: Handle = backend.watch_graph(self._on_change)
 
-    def _on_token(self, token: str, alive: bool) -> None:
+    def _on_change(self, key: str, entity: Entity | None) -> None:
         with self._lock:
-            if not alive:
-                gone = self._entities.pop(token, None)
-                if gone is not None:
+            if entity is None:
+                gone = self._entities.pop(key, None)
+                if gone is not None and gone.gid:
                     self._by_gid.pop(gone.gid, None)
             else:
-                try:
-                    entity = self._entities[token] = Entity.parse(token)
-                except BusError:
-                    return  # not ours to read (another tool's token under @ros2_lv)
-                self._by_gid[entity.gid] = entity
+                self._entities[key] = entity
+                if entity.gid:
+                    self._by_gid[entity.gid] = entity
             self._lock.notify_all()
 
     def entities(self) -> list[Entity]:
@@ -48,7 +41,7 @@ class Graph:
             return list(self._entities.values())
 
     def by_gid(self, gid: bytes) -> Entity | None:
-        """The live entity with this GID (as a sample's attachment carries it), if any."""
+        """The live entity with this GID (as a sample's info carries it), if any."""
         with self._lock:
             return self._by_gid.get(gid)
 
@@ -68,16 +61,16 @@ class Graph:
     def node_names_and_namespaces(self) -> list[tuple[str, str]]:
         """Every node as (name, namespace), as rclpy's ``get_node_names_and_namespaces()``.
 
-        As in rmw_zenoh's graph cache, a node is one (session id, node id), known from any of
-        its tokens; nodes sharing a name are each listed.
+        As in rmw's graph caches, a node is one ``node_key`` (zenoh: session and node id),
+        known from any of its entities; nodes sharing a name are each listed.
         """
-        nodes = {(e.zid, e.node_id): (e.node_name, e.namespace) for e in self.entities()}
+        nodes = {e.node_key: (e.node_name, e.namespace) for e in self.entities()}
         return sorted(nodes.values())
 
     def endpoints(self, topic: str, kind: EntityKind) -> list[Entity]:
-        """The publishers or subscriptions on one fully qualified topic."""
+        """The publishers or subscriptions on one fully qualified topic (each with its node and QoS)."""
         return [e for e in self.entities() if e.kind is kind and e.topic == topic]
 
     def close(self) -> None:
-        """Stop following the tokens."""
+        """Stop following the wire's graph."""
         self._watch.close()

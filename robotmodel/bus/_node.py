@@ -1,30 +1,36 @@
-"""rclpy's shape on the bus: a Context (one session), Nodes, Publishers and Subscriptions."""
+"""rclpy's shape on the bus: a Context (one session on a wire), Nodes, Publishers and Subscriptions.
+
+Everything here speaks ROS (names, types, QoS) through the backend seam
+(:mod:`robotmodel.bus._backend`) and works the same on every wire.
+"""
 
 from __future__ import annotations
 
-import itertools
 import logging
 import threading
-import time
 from collections.abc import Callable, Sequence
+from functools import partial
 from typing import Any, Generic, NamedTuple, TypeVar
 
-from robotmodel.bus._attachment import Attachment, AttachmentWriter, is_attachment
-from robotmodel.bus._backend import Backend, Handle, RawPublisher, RawSample
+from robotmodel.bus._backend import (
+    Backend,
+    EntityKind,
+    Handle,
+    NodeHandle,
+    ParameterStore,
+    PublisherHandle,
+    QoSEvent,
+    Sample,
+    SampleInfo,
+    open_backend,
+)
 from robotmodel.bus._codec import Codec, codec_for
 from robotmodel.bus._domain import default_domain_id
 from robotmodel.bus._graph import Graph
-from robotmodel.bus._names import (
-    Entity,
-    EntityKind,
-    resolve_topic,
-    ros_type_name,
-    topic_keyexpr,
-    validate_namespace,
-    validate_node_name,
-)
+from robotmodel.bus._names import resolve_topic, validate_namespace, validate_node_name
 from robotmodel.bus._qos import QOS_DEFAULT, QoS
 from robotmodel.bus._remap import RemapRule, node_name_of, node_namespace_of, parse_rules, remap_topic
+from robotmodel.bus._warn import Warner
 from robotmodel.errors import BusError, MessageError
 
 __all__ = ["Context", "Node", "Publisher", "RawMessage", "Subscription", "default_domain_id"]
@@ -32,6 +38,7 @@ __all__ = ["Context", "Node", "Publisher", "RawMessage", "Subscription", "defaul
 log = logging.getLogger("robotmodel.bus")
 M = TypeVar("M")
 QoSLike = QoS | int
+QoSEventHandler = Callable[[QoSEvent], None]
 
 
 def _qos(qos: QoSLike) -> QoS:
@@ -39,47 +46,45 @@ def _qos(qos: QoSLike) -> QoS:
 
 
 class Context:
-    """One transport session shared by nodes (rclpy's context, rmw_zenoh's zenoh session).
+    """One session on one wire, shared by nodes (rclpy's context).
 
-    ``backend`` is ``"zenoh"`` (the default: processes and machines), ``"inprocess"``
-    (this process only) or a :class:`Backend`. ``connect`` lists zenoh endpoints to use
-    instead of the loopback rendezvous (see :mod:`robotmodel.bus` for the topology).
+    ``backend`` names the wire (``"zenoh"``, the default: processes and machines;
+    ``"inprocess"``: this process only; see :data:`robotmodel.bus.BACKENDS`) or is an open
+    :class:`Backend`, whose domain the context then takes. ``connect`` says where to meet
+    the others (zenoh endpoints instead of the loopback rendezvous; see :mod:`robotmodel.bus`).
     """
 
     def __init__(self, *, domain_id: int | None = None, connect: Sequence[str] = (),
                  backend: str | Backend = "zenoh") -> None:
-        self.domain_id = default_domain_id() if domain_id is None else int(domain_id)
-        if self.domain_id < 0:
-            raise BusError(f"domain id must be >= 0, got {self.domain_id}")
         if isinstance(backend, Backend):
             self.backend = backend
-        elif backend == "inprocess":
-            from robotmodel.bus._inprocess import InProcessBackend
-
-            self.backend = InProcessBackend()
-        elif backend == "zenoh":
-            from robotmodel.bus._zenoh import ZenohBackend
-
-            self.backend = ZenohBackend(connect=list(connect))
+            self.domain_id = backend.domain_id
         else:
-            raise BusError(f"unknown bus backend '{backend}' (expected 'zenoh' or 'inprocess')")
-        self._ids = itertools.count()
+            domain = default_domain_id() if domain_id is None else int(domain_id)
+            if domain < 0:
+                raise BusError(f"domain id must be >= 0, got {domain}")
+            self.backend = open_backend(backend, domain, connect)
+            self.domain_id = domain
         self._lock = threading.Lock()
         self._graph: Graph | None = None
         self._closed = False
 
-    def next_id(self) -> int:
-        """The next entity id (rmw_zenoh numbers nodes and their entities with one counter)."""
-        with self._lock:
-            return next(self._ids)
+    @property
+    def encoding(self) -> str:
+        """The serialization the wire's payloads are in (``"cdr"``, ``"ros1"``)."""
+        return self.backend.encoding
 
     @property
     def graph(self) -> Graph:
         """The live graph of this domain (started on first use)."""
         with self._lock:
             if self._graph is None:
-                self._graph = Graph(self.backend, self.domain_id)
+                self._graph = Graph(self.backend)
             return self._graph
+
+    def qos_incompatibility(self, publisher: QoS, subscription: QoS) -> str:
+        """The policy that keeps such a publisher and subscription apart on this wire ('' if none)."""
+        return self.backend.qos_incompatibility(publisher, subscription)
 
     def close(self) -> None:
         """End the session: every node, publisher and subscription on it goes away."""
@@ -100,77 +105,76 @@ class Context:
 
 
 class RawMessage(NamedTuple):
-    """A sample before decoding: the topic, its ROS type, the CDR payload and the attachment."""
+    """A sample before decoding: topic, ROS type, payload (in ``encoding``) and the wire's sample info."""
 
     topic: str
     typename: str
     payload: bytes
-    attachment: Attachment
+    info: SampleInfo
+    encoding: str
 
 
-class _Warner:
-    """At most one warning per reason every ``period`` seconds, counting those held back."""
+# tuple.__new__ bound to the class: a third of the NamedTuple constructor's cost per sample.
+_new_raw = partial(tuple.__new__, RawMessage)
 
-    def __init__(self, period: float = 5.0) -> None:
-        self._period = period
-        self._last: dict[str, float] = {}
-        self._held: dict[str, int] = {}
-        self._lock = threading.Lock()
 
-    def warn(self, reason: str, text: str) -> None:
-        now = time.monotonic()
-        with self._lock:
-            if now - self._last.get(reason, -1e9) < self._period:
-                self._held[reason] = self._held.get(reason, 0) + 1
-                return
-            self._last[reason] = now
-            held = self._held.pop(reason, 0)
-        log.warning("%s%s", text, f" ({held} more since the last warning)" if held else "")
+def _warn_incompatible(event: QoSEvent, publisher: bool) -> None:
+    # rclcpp's and rclpy's default incompatible-QoS handlers' texts.
+    if publisher:
+        log.warning("New subscription discovered on topic '%s', requesting incompatible QoS. "
+                    "No messages will be sent to it. Last incompatible policy: %s", event.topic, event.last_policy)
+    else:
+        log.warning("New publisher discovered on topic '%s', offering incompatible QoS. "
+                    "No messages will be received from it. Last incompatible policy: %s",
+                    event.topic, event.last_policy)
 
 
 class Publisher(Generic[M]):
-    """Publishes messages of one type on one topic (create it with :meth:`Node.create_publisher`)."""
+    """Publishes messages of one type on one topic (create it with :meth:`Node.create_publisher`).
 
-    def __init__(self, node: Node, codec: Codec, topic: str, qos: QoS) -> None:
+    A subscription whose QoS cannot match on this wire (see :meth:`Context.qos_incompatibility`)
+    gets nothing; ``on_incompatible_qos(event)`` is then called, by default rclpy's warning.
+    ``incompatible_qos`` holds the latest such event.
+    """
+
+    def __init__(self, node: Node, codec: Codec, topic: str, qos: QoS,
+                 on_incompatible_qos: QoSEventHandler | None = None) -> None:
         self.topic_name = topic
         self.qos = qos
         self.codec = codec
-        ctx = node.context
-        self.entity = Entity(ctx.domain_id, ctx.backend.zid, node.node_id, ctx.next_id(), EntityKind.PUBLISHER,
-                             node.namespace, node.name, node.enclave, topic, codec.typename, codec.type_hash,
-                             qos.resolved())
-        self.key = topic_keyexpr(ctx.domain_id, topic, codec.typename, codec.type_hash)
-        self.gid = self.entity.gid
+        self.incompatible_qos: QoSEvent | None = None
+        self._on_incompatible = on_incompatible_qos
         self._node = node
         codec.warm()
-        self._lock = threading.Lock()
-        self._seq = 1
-        self._attachment = AttachmentWriter(self.gid)
-        self._pub: RawPublisher | None = ctx.backend.declare_publisher(self.key, qos)
-        self._token: Handle | None = ctx.backend.declare_token(self.entity.keyexpr)
+        self.handle: PublisherHandle | None = node.handle.declare_publisher(
+            topic, codec.message_type(), qos, self._on_qos_event)
+        self.gid = self.handle.gid
+
+    def _on_qos_event(self, event: QoSEvent) -> None:
+        self.incompatible_qos = event
+        if self._on_incompatible is None:
+            _warn_incompatible(event, publisher=True)
+        else:
+            self._on_incompatible(event)
 
     def publish(self, msg: M) -> None:
         """Serialize and send one message."""
         self.publish_raw(self.codec.encode(msg))
 
     def publish_raw(self, payload: bytes) -> None:
-        """Send already-serialized CDR (with its 4-byte header) under this publisher's attachment."""
-        with self._lock:
-            pub = self._pub
-            if pub is None:
-                raise BusError(f"publisher on '{self.topic_name}' is closed")
-            seq = self._seq
-            self._seq = seq + 1
-            pub.put(payload, self._attachment(seq, time.time_ns()))
+        """Send an already-serialized message (in the wire's encoding)."""
+        handle = self.handle
+        if handle is None:
+            raise BusError(f"publisher on '{self.topic_name}' is closed")
+        handle.publish(payload)
 
     def matched(self) -> bool:
-        """Whether any subscriber matches this publisher's key now (plain zenoh ones included).
+        """Whether a compatible subscription receives this publisher's samples now (on zenoh: any subscriber).
 
-        Samples published before a subscriber is matched do not reach it (unless latched).
+        Samples published before a subscription is matched do not reach it (unless latched).
         """
-        with self._lock:
-            pub = self._pub
-        return pub is not None and pub.matched()
+        handle = self.handle
+        return handle is not None and handle.matched()
 
     def get_subscription_count(self) -> int:
         """How many subscriptions on this topic the graph shows (any type)."""
@@ -184,65 +188,48 @@ class Publisher(Generic[M]):
             timeout)
 
     def close(self) -> None:
-        """Undeclare the publisher and its liveliness token."""
-        with self._lock:
-            pub, self._pub = self._pub, None
-            token, self._token = self._token, None
-        if pub is not None:
-            pub.close()
-        if token is not None:
-            token.close()
+        """Withdraw the publisher."""
+        handle, self.handle = self.handle, None
+        if handle is not None:
+            handle.close()
 
 
 class Subscription(Generic[M]):
     """Calls back for each message on a topic (create it with :meth:`Node.create_subscription`).
 
-    Callbacks run on the transport's receive thread. A payload that does not decode, or a
-    sample without rmw_zenoh's attachment, is dropped with a rate-limited warning.
+    Callbacks run on the wire's receive thread. A payload that does not decode is dropped with
+    a rate-limited warning. Incompatible publishers are reported as for :class:`Publisher`.
     """
 
     def __init__(self, node: Node, codec: Codec | None, topic: str, qos: QoS,
-                 callback: Callable[[Any], None], raw: bool) -> None:
+                 callback: Callable[[Any], None], raw: bool,
+                 on_incompatible_qos: QoSEventHandler | None = None) -> None:
         self.topic_name = topic
         self.qos = qos
         self.codec = codec
+        self.incompatible_qos: QoSEvent | None = None
+        self._on_incompatible = on_incompatible_qos
         self._callback = callback
-        # Set before the subscriber exists: latched samples can arrive during its declaration.
+        self._encoding = node.context.encoding
+        # Set before the subscription exists: latched samples can arrive during its declaration.
         self._decode: Callable[[bytes], Any] | None = None if raw or codec is None else codec.decode
-        self._warner = _Warner()
-        ctx = node.context
-        typename = codec.typename if codec else ""
-        type_hash = codec.type_hash if codec else ""
+        self._warner = Warner()
         if codec is not None:
             codec.warm()
-            key = topic_keyexpr(ctx.domain_id, topic, typename, type_hash)
-        else:
-            key = f"{ctx.domain_id}/{topic.strip('/')}/*/*"
-        self.key = key
-        self._token: Handle | None = None
-        self._sub: Handle | None = ctx.backend.declare_subscriber(key, qos, self._on_sample)
-        if codec is not None:
-            # A type-agnostic echo is not an endpoint of one type, so it announces nothing.
-            self.entity: Entity | None = Entity(
-                ctx.domain_id, ctx.backend.zid, node.node_id, ctx.next_id(), EntityKind.SUBSCRIPTION,
-                node.namespace, node.name, node.enclave, topic, typename, type_hash, qos.resolved())
-            self._token = ctx.backend.declare_token(self.entity.keyexpr)
-        else:
-            self.entity = None
+        self.handle: Handle | None = node.handle.declare_subscription(
+            topic, None if codec is None else codec.message_type(), qos, self._on_sample, self._on_qos_event)
 
-    def _on_sample(self, sample: RawSample) -> None:
-        attachment = sample.attachment
-        if attachment is None or not is_attachment(attachment):
-            what = "without an attachment" if attachment is None else f"with a {len(attachment)}-byte attachment"
-            self._warner.warn("attachment", f"dropped a message on '{self.topic_name}' {what} "
-                                            "(rmw_zenoh's is 33 bytes)")
-            return
+    def _on_qos_event(self, event: QoSEvent) -> None:
+        self.incompatible_qos = event
+        if self._on_incompatible is None:
+            _warn_incompatible(event, publisher=False)
+        else:
+            self._on_incompatible(event)
+
+    def _on_sample(self, sample: Sample) -> None:
         decode = self._decode
         if decode is None:
-            att = Attachment.decode(attachment)
-            chunks = sample.key.split("/")
-            typename = ros_type_name(chunks[-2]) if len(chunks) >= 3 else ""
-            item: Any = RawMessage(self.topic_name, typename, sample.payload, att)
+            item: Any = _new_raw((self.topic_name, sample.typename, sample.payload, sample.info, self._encoding))
         else:
             try:
                 item = decode(sample.payload)
@@ -254,17 +241,14 @@ class Subscription(Generic[M]):
         try:
             self._callback(item)
         except Exception:
-            # The transport thread must survive a failing user callback; say so loudly.
+            # The wire's thread must survive a failing user callback; say so loudly.
             log.exception("subscription callback on '%s' raised", self.topic_name)
 
     def close(self) -> None:
-        """Undeclare the subscription and its liveliness token."""
-        sub, self._sub = self._sub, None
-        token, self._token = self._token, None
-        if sub is not None:
-            sub.close()
-        if token is not None:
-            token.close()
+        """Withdraw the subscription."""
+        handle, self.handle = self.handle, None
+        if handle is not None:
+            handle.close()
 
 
 class Node:
@@ -299,11 +283,24 @@ class Node:
         self._owns_context = context is None
         self.context = context if context is not None else Context(
             domain_id=domain_id, connect=connect, backend=backend)
-        self.node_id = self.context.next_id()
-        self.entity = Entity(self.context.domain_id, self.context.backend.zid, self.node_id, self.node_id,
-                             EntityKind.NODE, self.namespace, self.name, self.enclave)
         self._children: list[Publisher[Any] | Subscription[Any]] = []
-        self._token: Handle | None = self.context.backend.declare_token(self.entity.keyexpr)
+        try:
+            self.handle: NodeHandle = self.context.backend.create_node(self.name, self.namespace, self.enclave)
+        except BaseException:
+            if self._owns_context:
+                self.context.close()
+            raise
+        self._closed = False
+
+    @property
+    def fully_qualified_name(self) -> str:
+        """``/namespace/name`` (rclpy's property)."""
+        return self.namespace.rstrip("/") + "/" + self.name
+
+    @property
+    def parameters(self) -> ParameterStore:
+        """The node's parameter store on its wire (node-local on zenoh and in-process)."""
+        return self.handle.parameters()
 
     def get_name(self) -> str:
         """The node's name (rclpy spelling)."""
@@ -318,19 +315,23 @@ class Node:
         full = resolve_topic(topic, self.namespace, self.name)
         return full if only_expand else remap_topic(self.remappings, full, self.name, self.namespace)
 
-    def create_publisher(self, msg_type: type[M] | str, topic: str, qos: QoSLike = QOS_DEFAULT) -> Publisher[M]:
+    def create_publisher(self, msg_type: type[M] | str, topic: str, qos: QoSLike = QOS_DEFAULT, *,
+                         on_incompatible_qos: QoSEventHandler | None = None) -> Publisher[M]:
         """A publisher of ``msg_type`` on ``topic``."""
         self._check_open()
-        pub: Publisher[M] = Publisher(self, codec_for(msg_type), self.resolve_topic_name(topic), _qos(qos))
+        pub: Publisher[M] = Publisher(self, codec_for(msg_type, self.context.encoding),
+                                      self.resolve_topic_name(topic), _qos(qos), on_incompatible_qos)
         self._children.append(pub)
         return pub
 
     def create_subscription(self, msg_type: type[M] | str, topic: str, callback: Callable[[M], None],
-                            qos: QoSLike = QOS_DEFAULT, *, raw: bool = False) -> Subscription[M]:
+                            qos: QoSLike = QOS_DEFAULT, *, raw: bool = False,
+                            on_incompatible_qos: QoSEventHandler | None = None) -> Subscription[M]:
         """Call ``callback(msg)`` for each message on ``topic`` (``callback(RawMessage)`` with ``raw``)."""
         self._check_open()
-        sub: Subscription[M] = Subscription(self, codec_for(msg_type), self.resolve_topic_name(topic), _qos(qos),
-                                            callback, raw)
+        sub: Subscription[M] = Subscription(self, codec_for(msg_type, self.context.encoding),
+                                            self.resolve_topic_name(topic), _qos(qos), callback, raw,
+                                            on_incompatible_qos)
         self._children.append(sub)
         return sub
 
@@ -344,8 +345,8 @@ class Node:
         return sub
 
     def _check_open(self) -> None:
-        if self._token is None:
-            raise BusError(f"node '{self.entity.node_fqn}' is closed")
+        if self._closed:
+            raise BusError(f"node '{self.fully_qualified_name}' is closed")
 
     def get_topic_names_and_types(self) -> list[tuple[str, list[str]]]:
         """Every topic of the domain with its types, sorted (rclpy's list)."""
@@ -364,13 +365,13 @@ class Node:
         return len(self.context.graph.endpoints(self.resolve_topic_name(topic), EntityKind.SUBSCRIPTION))
 
     def close(self) -> None:
-        """Undeclare everything this node made; end its session if it opened one."""
+        """Withdraw everything this node made, then the node; end its session if it opened one."""
         for child in reversed(self._children):
             child.close()
         self._children.clear()
-        token, self._token = self._token, None
-        if token is not None:
-            token.close()
+        if not self._closed:
+            self._closed = True
+            self.handle.close()
         if self._owns_context:
             self.context.close()
 

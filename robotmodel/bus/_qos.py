@@ -1,11 +1,7 @@
-"""Quality of service: rclpy's profile fields, tf2_ros's presets, and rmw_zenoh's compact token text.
+"""Quality of service: rclpy's profile fields, tf2_ros's presets, and rmw_dds_common's matching rules.
 
-rmw_zenoh writes an entity's QoS into its liveliness token as
-``rel:dur:hist,depth:dl_s,dl_ns:ls_s,ls_ns:liv,lease_s,lease_ns``, leaving every field that
-equals its own default (RELIABLE, VOLATILE, KEEP_LAST, depth 42, infinite durations,
-AUTOMATIC liveliness) empty; enum fields are written as rmw's integer values.
-Reading it back accepts, per policy, exactly the integers rmw_zenoh's own tables hold
-(so a token rmw_zenoh ignores is ignored here too).
+The wires map these profiles onto their own terms (zenoh: :mod:`._zenoh_names` writes them
+into liveliness tokens; ROS 1: latching; DDS: its QoS policies).
 """
 
 from __future__ import annotations
@@ -28,8 +24,7 @@ __all__ = [
     "Liveliness",
     "QoS",
     "Reliability",
-    "qos_from_keyexpr",
-    "qos_to_keyexpr",
+    "incompatible_policy",
 ]
 
 # rmw_zenoh's choice for a depth of 0 ("system default").
@@ -150,70 +145,27 @@ QOS_TF_STATIC_LISTENER = QoS(100, durability=Durability.TRANSIENT_LOCAL)
 # robot_state_publisher's /robot_description: depth 1, transient local, reliable.
 QOS_LATCHED = QoS(1, durability=Durability.TRANSIENT_LOCAL)
 
-_BASE = QoS(DEFAULT_DEPTH, Reliability.RELIABLE, Durability.VOLATILE, History.KEEP_LAST)
-_NS = 1_000_000_000
 
 
-def _sec_nsec(ns: int) -> tuple[int, int]:
-    # rmw_time_t splits a duration in whole seconds and the nanosecond rest.
-    return divmod(ns, _NS)
+def incompatible_policy(publisher: QoS, subscription: QoS) -> str:
+    """The policy that keeps a publisher and a subscription apart under rmw_dds_common's rules ('' if none).
 
-
-def qos_to_keyexpr(qos: QoS) -> str:
-    """rmw_zenoh's compact QoS text for a liveliness token (defaults left empty)."""
-    q = qos.resolved()
-
-    def field(value: int, default: int) -> str:
-        return "" if value == default else str(int(value))
-
-    dl_s, dl_ns = _sec_nsec(q.deadline_ns)
-    ls_s, ls_ns = _sec_nsec(q.lifespan_ns)
-    lv_s, lv_ns = _sec_nsec(q.liveliness_lease_ns)
-    inf_s, inf_ns = _sec_nsec(DURATION_INFINITE_NS)
-    return (
-        f"{field(q.reliability, _BASE.reliability)}:{field(q.durability, _BASE.durability)}:"
-        f"{field(q.history, _BASE.history)},{field(q.depth, _BASE.depth)}:"
-        f"{field(dl_s, inf_s)},{field(dl_ns, inf_ns)}:{field(ls_s, inf_s)},{field(ls_ns, inf_ns)}:"
-        f"{field(q.liveliness, _BASE.liveliness)},{field(lv_s, inf_s)},{field(lv_ns, inf_ns)}"
-    )
-
-
-def qos_from_keyexpr(text: str) -> QoS:
-    """Parse rmw_zenoh's compact QoS text (empty fields are its defaults); raises BusError."""
-    parts = text.split(":")
-    groups = [p.split(",") for p in parts]
-    if len(parts) < 6 or len(groups[2]) < 2 or len(groups[3]) < 2 or len(groups[4]) < 2 or len(groups[5]) < 3:
-        raise BusError(f"invalid QoS text '{text}' in a liveliness token")
-    inf_s, inf_ns = _sec_nsec(DURATION_INFINITE_NS)
-
-    def num(s: str, default: int) -> int:
-        if not s:
-            return default
-        if not s.isdigit():
-            raise BusError(f"invalid QoS text '{text}' in a liveliness token")
-        return int(s)
-
-    def policy(s: str, default: int) -> int:
-        # rmw_zenoh looks policies up by their exact decimal text ('01' is not 1).
-        value = num(s, default)
-        if s and s != str(value):
-            raise BusError(f"invalid QoS text '{text}' in a liveliness token")
-        return value
-
-    def dur(s: str, ns: str) -> int:
-        sec, nsec = num(s, inf_s), num(ns, inf_ns)
-        return sec * _NS + nsec
-
-    try:
-        return QoS(
-            depth=num(groups[2][1], DEFAULT_DEPTH),
-            reliability=Reliability(policy(parts[0], Reliability.RELIABLE)),
-            durability=Durability(policy(parts[1], Durability.VOLATILE)),
-            history=History(policy(groups[2][0], History.KEEP_LAST)),
-            deadline_ns=dur(groups[3][0], groups[3][1]),
-            lifespan_ns=dur(groups[4][0], groups[4][1]),
-            liveliness=Liveliness(policy(groups[5][0], Liveliness.AUTOMATIC)),
-            liveliness_lease_ns=dur(groups[5][1], groups[5][2]),
-        )
-    except ValueError as exc:
-        raise BusError(f"invalid QoS text '{text}' in a liveliness token: {exc}") from exc
+    As ``qos_profile_check_compatible``'s errors (its warnings about unknown policies do
+    not stop a match): a best-effort publisher and a reliable subscription (RELIABILITY), a
+    volatile publisher and a transient-local subscription (DURABILITY), a subscription
+    deadline the publisher does not keep (DEADLINE), automatic liveliness against manual by
+    topic or a shorter subscription lease (LIVELINESS). Named as rclpy names the policy in
+    its incompatible-QoS warning.
+    """
+    pub, sub = publisher.resolved(), subscription.resolved()
+    if pub.reliability == Reliability.BEST_EFFORT and sub.reliability == Reliability.RELIABLE:
+        return "RELIABILITY"
+    if pub.durability == Durability.VOLATILE and sub.durability == Durability.TRANSIENT_LOCAL:
+        return "DURABILITY"
+    if sub.deadline_ns != DURATION_INFINITE_NS and not pub.deadline_ns <= sub.deadline_ns:
+        return "DEADLINE"
+    if pub.liveliness == Liveliness.AUTOMATIC and sub.liveliness == Liveliness.MANUAL_BY_TOPIC:
+        return "LIVELINESS"
+    if sub.liveliness_lease_ns != DURATION_INFINITE_NS and not pub.liveliness_lease_ns <= sub.liveliness_lease_ns:
+        return "LIVELINESS"
+    return ""

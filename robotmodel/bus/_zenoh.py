@@ -1,263 +1,268 @@
-"""The zenoh backend: one zenoh session, with rmw_zenoh's mapping of QoS onto zenoh.
+"""The zenoh wire: ROS 2 nodes, topics and graph in rmw_zenoh's form, behind the backend seam.
 
-- Reliable QoS -> reliable zenoh publisher; congestion control BLOCK when the QoS says so
-  (:attr:`QoS.blocks`), DROP otherwise.
-- Transient local (latched) -> zenoh-ext AdvancedPublisher with a cache of ``depth``
-  samples and publisher detection (plus a 0.5 s sporadic heartbeat when reliable), and
-  AdvancedSubscriber with history, late-publisher detection and subscriber detection
-  (plus heartbeat recovery when reliable), exactly as rmw_zenoh sets them.
-- Payloads carry no zenoh encoding, as rmw_zenoh's.
+What goes on the wire is rmw_zenoh's (Jazzy and later): a publisher puts CDR on the key
+:func:`topic_keyexpr` gives, with the 33-byte attachment (sequence number, source time, GID);
+every node, publisher and subscription declares a liveliness token (:class:`Token`), from
+which every session builds the graph. Node and entity ids come from one counter per session,
+as rmw_zenoh numbers them. As in rmw_zenoh, any publisher and subscription of one topic and
+type match whatever their QoS (zenoh's keys carry no QoS), so no incompatible-QoS event is
+ever raised. Parameters are node-local.
 """
 
 from __future__ import annotations
 
-import atexit
-import logging
+import itertools
 import threading
 import time
-import weakref
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
+from functools import partial
 from typing import Any
 
-import zenoh
-import zenoh.ext as zx
-
-from robotmodel.bus._backend import Backend, Handle, RawPublisher, RawSample, SampleCallback, TokenCallback
-from robotmodel.bus._config import (
-    LOOPBACK_ANY_PORT,
-    rendezvous_endpoint,
-    session_config,
-    user_session_config,
+from robotmodel.bus._attachment import (
+    ATTACHMENT_SIZE,
+    LABELLED_PREFIX,
+    AttachmentWriter,
+    read_attachment,
+    unpack_attachment,
 )
-from robotmodel.bus._qos import QoS, Reliability
+from robotmodel.bus._backend import (
+    CDR,
+    Backend,
+    EntityKind,
+    GraphCallback,
+    Handle,
+    LocalParameters,
+    MessageType,
+    NodeHandle,
+    ParameterStore,
+    PublisherHandle,
+    QoSEventCallback,
+    Sample,
+    SampleCallback,
+    SampleInfo,
+)
+from robotmodel.bus._names import ros_type_name
+from robotmodel.bus._qos import QoS
+from robotmodel.bus._warn import Warner
+from robotmodel.bus._zenoh_names import ADMIN_SPACE, Token, topic_keyexpr
+from robotmodel.bus._zenoh_session import RawPublisher, ZenohSession
 from robotmodel.errors import BusError
 
-__all__ = ["ZenohBackend", "open_session"]
+__all__ = ["ZenohBackend"]
 
-log = logging.getLogger("robotmodel.bus")
-# rmw_zenoh's SAMPLE_MISS_DETECTION_HEARTBEAT_PERIOD (500 ms).
-_HEARTBEAT_S = 0.5
-# How long opening waits for its first link before going on without it.
-_LINK_TIMEOUT_S = 2.0
-# zenoh-python runs each Python callback on a thread of its own, named so.
-_CALLBACK_THREAD = "(pyo3-closure)"
-# How long close() waits for those threads to end once the session let their callbacks go.
-_CALLBACK_JOIN_S = 5.0
-
-
-def open_session(connect: Sequence[str] = ()) -> zenoh.Session:
-    """Open a peer session: the user's config file, explicit endpoints, or the loopback rendezvous."""
-    user = user_session_config(connect)
-    try:
-        if user is not None:
-            return zenoh.open(user)
-        if connect:
-            return _linked(zenoh.open(session_config([LOOPBACK_ANY_PORT], connect)), connect)
-        rendezvous = rendezvous_endpoint()
-        try:
-            # First on the machine: hold the well-known port for those who come later, as
-            # a router (see robotmodel.bus._config for why rmw_zenoh's nodes need one).
-            return zenoh.open(session_config([rendezvous, LOOPBACK_ANY_PORT], [], mode="router"))
-        except zenoh.ZError:
-            # Taken (a router, or a peer that came first): meet there.
-            return _linked(zenoh.open(session_config([LOOPBACK_ANY_PORT], [rendezvous])), [rendezvous])
-    except zenoh.ZError as exc:
-        raise BusError(f"cannot open a zenoh session: {exc}") from exc
-
-
-def _linked(session: zenoh.Session, endpoints: Sequence[str], timeout: float = _LINK_TIMEOUT_S) -> zenoh.Session:
-    """Return once the session has a peer or a router (so the graph is visible), or at the timeout.
-
-    Past the timeout the session keeps retrying in the background; nothing is lost.
-    """
-    end = time.monotonic() + timeout
-    while time.monotonic() < end:
-        info = session.info
-        if any(True for _ in info.peers_zid()) or any(True for _ in info.routers_zid()):
-            return session
-        time.sleep(0.001)
-    log.warning("no zenoh peer or router answered at %s yet; still trying in the background", ", ".join(endpoints))
-    return session
-
-
-_LIVE: weakref.WeakSet[ZenohBackend] = weakref.WeakSet()
-
-
-@atexit.register
-def _close_all() -> None:
-    # zenoh can hang the interpreter's exit on a session nobody closed.
-    for backend in list(_LIVE):
-        backend.close()
-
-
-class _Undeclare(Handle):
-    def __init__(self, backend: ZenohBackend, obj: Any) -> None:
-        self._backend = backend
-        self._obj: Any = obj
-
-    def close(self) -> None:
-        obj, self._obj = self._obj, None
-        if obj is not None:
-            self._backend._forget(self)
-            if not self._backend.closed:
-                obj.undeclare()
-
-
-class _Publisher(RawPublisher):
-    def __init__(self, backend: ZenohBackend, pub: Any) -> None:
-        self._backend = backend
-        self._pub: Any = pub
-        self._put = pub.put
-
-    def put(self, payload: bytes, attachment: bytes) -> None:
-        try:
-            self._put(payload, attachment=attachment)
-        except zenoh.ZError as exc:  # e.g. the session was closed under a timer thread
-            raise BusError(f"cannot publish: {exc}") from exc
-
-    def matched(self) -> bool:
-        pub = self._pub
-        if pub is None:
-            return False
-        status = getattr(pub, "matching_status", None)
-        # zenoh-python's AdvancedPublisher does not report matching; a latched publisher's
-        # cache serves subscribers whenever they come, so it counts as matched.
-        return True if status is None else bool(status.matching)
-
-    def close(self) -> None:
-        pub, self._pub = self._pub, None
-        if pub is not None:
-            self._backend._forget(self)
-            if not self._backend.closed:
-                pub.undeclare()
+# How long the graph's first query waits for the tokens already out there.
+_GRAPH_QUERY_S = 1.0
+# tuple.__new__ bound to the classes: a third of a NamedTuple's own constructor on the receive path.
+_new_sample = partial(tuple.__new__, Sample)
+_new_info = partial(tuple.__new__, SampleInfo)
 
 
 class ZenohBackend(Backend):
-    """A zenoh session (see :mod:`robotmodel.bus._config` for how it finds the others)."""
+    """A zenoh session speaking rmw_zenoh's wire (see :mod:`robotmodel.bus._config` for the topology)."""
 
-    def __init__(self, connect: Sequence[str] = (), session: zenoh.Session | None = None) -> None:
-        self._session = session if session is not None else open_session(connect)
-        self._zid = str(self._session.zid())
+    name = "zenoh"
+    encoding = CDR
+
+    def __init__(self, domain_id: int, session: ZenohSession) -> None:
+        super().__init__(domain_id)
+        self.zenoh = session
+        self._ids = itertools.count()
         self._lock = threading.Lock()
-        self._handles: list[Handle] = []
-        self._callback_threads: list[threading.Thread] = []
-        self.closed = False
-        _LIVE.add(self)
+
+    @classmethod
+    def open(cls, domain_id: int, connect: Sequence[str] = ()) -> ZenohBackend:
+        """See :meth:`Backend.open` (``connect``: zenoh endpoints instead of the loopback rendezvous)."""
+        return cls(domain_id, ZenohSession(connect=list(connect)))
 
     @property
-    def session(self) -> zenoh.Session:
-        """The underlying zenoh session."""
-        return self._session
+    def session(self) -> Any:
+        """The underlying ``zenoh.Session``."""
+        return self.zenoh.session
 
     @property
     def zid(self) -> str:
-        """See :attr:`Backend.zid`."""
-        return self._zid
+        """The session id as rmw_zenoh writes it in tokens."""
+        return self.zenoh.zid
 
-    def _track(self, handle: Handle) -> Handle:
+    def next_id(self) -> int:
+        """The next node or entity id (rmw_zenoh numbers them with one counter per session)."""
         with self._lock:
-            self._handles.append(handle)
-        return handle
+            return next(self._ids)
 
-    def _with_callback_thread(self, declare: Callable[[], Any]) -> Any:
-        """``declare()``, keeping the callback thread it starts, for :meth:`close` to wait for.
+    def create_node(self, name: str, namespace: str, enclave: str = "/") -> ZenohNode:
+        """See :meth:`Backend.create_node`."""
+        return ZenohNode(self, name, namespace, enclave)
 
-        That thread inherits the daemon flag of the thread that declared: declared from a
-        daemon thread, it is not waited for at exit, and if it wakes (its callback let go by
-        the closed session) while the interpreter finalizes, CPython ends it by unwinding
-        through zenoh's Rust frames and the process aborts (SIGABRT).
-        """
-        before = set(threading.enumerate())
-        obj = declare()
-        started = [t for t in threading.enumerate() if t not in before and t.name.endswith(_CALLBACK_THREAD)]
-        with self._lock:
-            self._callback_threads.extend(started)
-        return obj
+    def watch_graph(self, callback: GraphCallback) -> Handle:
+        """See :meth:`Backend.watch_graph`: the domain's liveliness tokens, read as rmw_zenoh reads them."""
 
-    def _forget(self, handle: Handle) -> None:
-        with self._lock:
-            if handle in self._handles:
-                self._handles.remove(handle)
+        def on_token(token: str, alive: bool) -> None:
+            if not alive:
+                callback(token, None)
+                return
+            try:
+                parsed = Token.parse(token)
+            except BusError:
+                return  # not ours to read (another tool's token under @ros2_lv)
+            callback(token, parsed.entity())
 
-    def declare_publisher(self, key: str, qos: QoS) -> RawPublisher:
-        """See :meth:`Backend.declare_publisher`."""
-        q = qos.resolved()
-        reliable = q.reliability == Reliability.RELIABLE
-        common: dict[str, Any] = {
-            "congestion_control": zenoh.CongestionControl.BLOCK if qos.blocks else zenoh.CongestionControl.DROP,
-            "reliability": zenoh.Reliability.RELIABLE if reliable else zenoh.Reliability.BEST_EFFORT,
-        }
-        pub: Any
-        if q.transient_local:
-            pub = zx.declare_advanced_publisher(
-                self._session, key, cache=zx.CacheConfig(q.depth), publisher_detection=True,
-                sample_miss_detection=zx.MissDetectionConfig(heartbeat=None, sporadic_heartbeat=_HEARTBEAT_S)
-                if reliable else None,
-                **common)
-        else:
-            pub = self._session.declare_publisher(key, **common)
-        handle = _Publisher(self, pub)
-        self._track(handle)
-        return handle
+        pattern = f"{ADMIN_SPACE}/{self.domain_id}/**"
+        watch = self.zenoh.watch_tokens(pattern, on_token)
+        for token in self.zenoh.get_tokens(pattern, _GRAPH_QUERY_S):
+            on_token(token, True)
+        return watch
 
-    def declare_subscriber(self, key: str, qos: QoS, callback: SampleCallback) -> Handle:
-        """See :meth:`Backend.declare_subscriber`."""
-        q = qos.resolved()
-        # On an exact key the sample's key is the subscription's: skip converting it (~1 us).
-        exact = "*" not in key
-
-        def on_sample(sample: zenoh.Sample) -> None:
-            att = sample.attachment
-            callback(RawSample(key if exact else str(sample.key_expr), sample.payload.to_bytes(),
-                               None if att is None else att.to_bytes()))
-
-        if q.transient_local:
-            sub: Any = self._with_callback_thread(lambda: zx.declare_advanced_subscriber(
-                self._session, key, on_sample,
-                history=zx.HistoryConfig(detect_late_publishers=True, max_samples=q.depth),
-                recovery=zx.RecoveryConfig(periodic_queries=None, heartbeat=True)
-                if q.reliability == Reliability.RELIABLE else None,
-                subscriber_detection=True))
-        else:
-            sub = self._with_callback_thread(lambda: self._session.declare_subscriber(key, on_sample))
-        return self._track(_Undeclare(self, sub))
-
-    def declare_token(self, key: str) -> Handle:
-        """See :meth:`Backend.declare_token`."""
-        return self._track(_Undeclare(self, self._session.liveliness().declare_token(key)))
-
-    def watch_tokens(self, pattern: str, callback: TokenCallback) -> Handle:
-        """See :meth:`Backend.watch_tokens`."""
-
-        def on_token(sample: zenoh.Sample) -> None:
-            callback(str(sample.key_expr), sample.kind == zenoh.SampleKind.PUT)
-
-        sub = self._with_callback_thread(
-            lambda: self._session.liveliness().declare_subscriber(pattern, on_token, history=True))
-        return self._track(_Undeclare(self, sub))
-
-    def get_tokens(self, pattern: str, timeout: float) -> list[str]:
-        """See :meth:`Backend.get_tokens`."""
-        tokens = []
-        for reply in self._session.liveliness().get(pattern, timeout=timeout):
-            if reply.ok is not None:
-                tokens.append(str(reply.ok.key_expr))
-        return tokens
+    def qos_incompatibility(self, publisher: QoS, subscription: QoS) -> str:
+        """See :meth:`Backend.qos_incompatibility`: never, as rmw_zenoh (keys carry no QoS)."""
+        del publisher, subscription
+        return ""
 
     def close(self) -> None:
         """See :meth:`Backend.close`."""
+        self.zenoh.close()
+
+
+class ZenohNode(NodeHandle):
+    """A node: its liveliness token, and the publishers and subscriptions declared on it."""
+
+    def __init__(self, backend: ZenohBackend, name: str, namespace: str, enclave: str) -> None:
+        self.backend = backend
+        self.node_id = backend.next_id()
+        self.token = Token(backend.domain_id, backend.zid, self.node_id, self.node_id, EntityKind.NODE,
+                           namespace, name, enclave)
+        self._children: list[Handle] = []
+        self._params = LocalParameters()
+        self._closed = False
+        self._token: Handle | None = backend.zenoh.declare_token(self.token.keyexpr)
+
+    def entity_token(self, kind: EntityKind, topic: str, mtype: MessageType, qos: QoS) -> Token:
+        """The token of a new endpoint of this node (it takes the next entity id)."""
+        t = self.token
+        return Token(t.domain_id, t.zid, self.node_id, self.backend.next_id(), kind, t.namespace, t.node_name,
+                     t.enclave, topic, mtype.typename, mtype.type_hash, qos.resolved())
+
+    def declare_publisher(self, topic: str, mtype: MessageType, qos: QoS,
+                          on_qos_event: QoSEventCallback | None = None) -> ZenohPublisher:
+        """See :meth:`NodeHandle.declare_publisher`."""
+        del on_qos_event  # rmw_zenoh raises no incompatible-QoS events
+        pub = ZenohPublisher(self, topic, mtype, qos)
+        self._children.append(pub)
+        return pub
+
+    def declare_subscription(self, topic: str, mtype: MessageType | None, qos: QoS, callback: SampleCallback,
+                             on_qos_event: QoSEventCallback | None = None) -> Handle:
+        """See :meth:`NodeHandle.declare_subscription`."""
+        del on_qos_event
+        sub = _ZenohSubscription(self, topic, mtype, qos, callback)
+        self._children.append(sub)
+        return sub
+
+    def parameters(self) -> ParameterStore:
+        """See :meth:`NodeHandle.parameters` (node-local)."""
+        return self._params
+
+    def close(self) -> None:
+        """Undeclare the node's endpoints, then its token."""
+        for child in reversed(self._children):
+            child.close()
+        self._children.clear()
+        token, self._token = self._token, None
+        if token is not None:
+            token.close()
+
+
+class ZenohPublisher(PublisherHandle):
+    """A publisher: a zenoh publisher on the topic's key, its token, and the attachment per sample."""
+
+    def __init__(self, node: ZenohNode, topic: str, mtype: MessageType, qos: QoS) -> None:
+        session = node.backend.zenoh
+        self.topic = topic
+        self.token = node.entity_token(EntityKind.PUBLISHER, topic, mtype, qos)
+        self.key = topic_keyexpr(node.backend.domain_id, topic, mtype.typename, mtype.type_hash)
+        self._gid = self.token.gid
+        self._attachment = AttachmentWriter(self._gid)
+        self._lock = threading.Lock()
+        self._seq = 1
+        self.raw: RawPublisher | None = session.declare_publisher(self.key, qos)
+        self._token: Handle | None = session.declare_token(self.token.keyexpr)
+
+    @property
+    def gid(self) -> bytes:
+        """See :attr:`PublisherHandle.gid` (XXH3-128 of the token, as rmw_zenoh)."""
+        return self._gid
+
+    def publish(self, payload: bytes) -> None:
+        """See :meth:`PublisherHandle.publish`."""
         with self._lock:
-            if self.closed:
+            raw = self.raw
+            if raw is None:
+                raise BusError(f"publisher on '{self.topic}' is closed")
+            seq = self._seq
+            self._seq = seq + 1
+            raw.put(payload, self._attachment(seq, time.time_ns()))
+
+    def matched(self) -> bool:
+        """See :meth:`PublisherHandle.matched` (plain zenoh subscribers count too)."""
+        with self._lock:
+            raw = self.raw
+        return raw is not None and raw.matched()
+
+    def close(self) -> None:
+        """Undeclare the publisher and its token."""
+        with self._lock:
+            raw, self.raw = self.raw, None
+            token, self._token = self._token, None
+        if raw is not None:
+            raw.close()
+        if token is not None:
+            token.close()
+
+
+class _ZenohSubscription(Handle):
+    """A subscriber on the topic's key (any type's with ``mtype`` None) and, when typed, its token."""
+
+    def __init__(self, node: ZenohNode, topic: str, mtype: MessageType | None, qos: QoS,
+                 callback: SampleCallback) -> None:
+        session = node.backend.zenoh
+        domain = node.backend.domain_id
+        self._topic = topic
+        self._callback = callback
+        self._typename = mtype.typename if mtype is not None else ""
+        self._warner = Warner()
+        self._token: Handle | None = None
+        key = (topic_keyexpr(domain, topic, mtype.typename, mtype.type_hash) if mtype is not None
+               else f"{domain}/{topic.strip('/')}/*/*")
+        self._sub: Handle | None = session.declare_subscriber(key, qos, self._on_raw)
+        if mtype is not None:
+            # A type-agnostic echo is not an endpoint of one type, so it announces nothing.
+            self._token = session.declare_token(node.entity_token(EntityKind.SUBSCRIPTION, topic, mtype, qos).keyexpr)
+
+    def _on_raw(self, key: str, payload: bytes, attachment: bytes | None) -> None:
+        typename = self._typename or self._typename_of(key)
+        # The hot path, inlined: today's 33-byte form read in one unpack.
+        if attachment is not None and len(attachment) >= ATTACHMENT_SIZE and \
+                not attachment.startswith(LABELLED_PREFIX):
+            seq, stamp, n, gid = unpack_attachment(attachment)
+            if n == 16:
+                self._callback(_new_sample((self._topic, typename, payload, _new_info((seq, stamp, gid, "")))))
                 return
-            handles = list(reversed(self._handles))
-        for handle in handles:
-            handle.close()
-        with self._lock:
-            self.closed = True
-            threads, self._callback_threads = self._callback_threads, []
-        self._session.close()  # type: ignore[no-untyped-call]
-        # Their callbacks are let go now: wait for the threads to end (see _with_callback_thread).
-        deadline = time.monotonic() + _CALLBACK_JOIN_S
-        for thread in threads:
-            if thread is not threading.current_thread():
-                thread.join(max(0.0, deadline - time.monotonic()))
+        fields = read_attachment(attachment)
+        if fields is None:
+            what = "without an attachment" if attachment is None else f"with a {len(attachment)}-byte attachment"
+            self._warner.warn("attachment", f"dropped a message on '{self._topic}' {what} "
+                                            "(rmw_zenoh's is 33 bytes)")
+            return
+        self._callback(_new_sample((self._topic, typename, payload, _new_info((*fields, "")))))
+
+    @staticmethod
+    def _typename_of(key: str) -> str:
+        chunks = key.split("/")
+        return ros_type_name(chunks[-2]) if len(chunks) >= 3 else ""
+
+    def close(self) -> None:
+        sub, self._sub = self._sub, None
+        token, self._token = self._token, None
+        if sub is not None:
+            sub.close()
+        if token is not None:
+            token.close()

@@ -4,7 +4,7 @@ The usual topics have known types and are subscribed at once, latched ones
 (/tf_static, /robot_description) with transient-local QoS so that data published before
 the recorder started is recorded too. Any other topic is subscribed as soon as the bus's
 graph names its type. Messages are written undecoded; the log time is the receive time
-and the publish time the sender's attachment stamp, as rosbag2 records them.
+and the publish time the sender's source timestamp, as rosbag2 records them.
 """
 
 from __future__ import annotations
@@ -76,7 +76,7 @@ class Recorder:
     def _on_message(self, msg: RawMessage) -> None:
         if self._stop.is_set():
             return
-        self.writer.write(msg.topic, time.time_ns(), msg.payload, msg.attachment.source_timestamp_ns)
+        self.writer.write(msg.topic, time.time_ns(), msg.payload, msg.info.source_timestamp_ns)
 
     def _discover(self) -> None:
         while self._pending and not self._stop.wait(_DISCOVERY_PERIOD_S):

@@ -1,6 +1,6 @@
-"""Which node published a sample: the GID in its attachment, matched against the graph's tokens.
+"""Which node published a sample: the GID the wire gives with it, matched against the bus's graph.
 
-A publisher's liveliness token and its first samples travel separately, so a sample can
+A publisher's announcement in the graph and its first samples travel separately, so a sample can
 arrive before the graph knows its publisher. Looking names up is cheap once known (a dict),
 throttled while unknown (the graph is scanned at most every 0.2 s per GID), and a caller
 that cannot simply wait for the next sample (a latched static transform is sent once) can

@@ -9,7 +9,7 @@ from types import TracebackType
 from typing import TYPE_CHECKING, Any
 
 from robotmodel.errors import MessageError, TransformException
-from robotmodel.msgs import TFMessage, decode_tf_records
+from robotmodel.msgs import TFMessage
 from robotmodel.tf_ros._authority import PublisherNames
 from robotmodel.tf_ros._node import OwnedNode
 
@@ -41,8 +41,9 @@ class TransformListener:
 
     ``authority`` is what the buffer records as each transform's broadcaster (shown by
     ``all_frames_as_yaml`` and view_frames). By default it is the publishing node's fully
-    qualified name, read from the publisher's GID in each sample's attachment and the
-    graph's liveliness tokens (ROS 1's listener recorded the publisher's name too);
+    qualified name: the one the wire gives with each sample (ROS 1's callerid, as ROS 1's
+    listener recorded it), else the publisher's GID in the sample's info looked up in the
+    bus's graph;
     ``default_authority`` (tf2_ros Python's constant) while the publisher is not known.
     Pass a string to record that instead. ``spin_thread`` is accepted for tf2_ros
     compatibility: the bus always delivers on its own thread.
@@ -53,7 +54,7 @@ class TransformListener:
     def __init__(self, buffer: Any, node: Node | None = None, *, spin_thread: bool = True,
                  qos: QoS | int | None = None, static_qos: QoS | int | None = None, authority: str | None = None,
                  **node_options: Any) -> None:
-        from robotmodel.bus import QOS_TF, QOS_TF_STATIC_LISTENER, codec_for
+        from robotmodel.bus import QOS_TF, QOS_TF_STATIC_LISTENER, TFRecords, codec_for
 
         del spin_thread
         self.buffer = buffer
@@ -66,9 +67,6 @@ class TransformListener:
         self._warn_lock = threading.Lock()
         self._last_warning = -1e9
         self._held = 0
-        # Samples may arrive while a subscription is being created (latched ones do), so the
-        # decoder must be ready before either exists.
-        self._codec = codec_for(TFMessage)
         # robotmodel's buffers take message-free inserts; any other buffer gets messages.
         self._insert: Any = getattr(buffer, "insert", None)
         self._node = OwnedNode(node, "transform_listener_impl_", **node_options)
@@ -76,6 +74,10 @@ class TransformListener:
         self._closed = False
         try:
             n = self._node.node
+            # Samples may arrive while a subscription is being created (latched ones do), so the
+            # decoders (for the wire's encoding) must be ready before either exists.
+            self._codec = codec_for(TFMessage, n.context.encoding)
+            self._records = codec_for(TFRecords, n.context.encoding)
             if authority is None:
                 # Start following the graph now, not on the receive thread at the first sample.
                 self._names = PublisherNames(n.context.graph)
@@ -105,15 +107,16 @@ class TransformListener:
         insert = self._insert
         try:
             if insert is not None:
-                records = decode_tf_records(raw.payload)
+                records = self._records.decode(raw.payload)
             else:
                 msg: TFMessage = self._codec.decode(raw.payload)
         except MessageError as exc:  # a bad payload is dropped, never a crash
             self._warn(f"dropped a message on '{raw.topic}' that does not decode as tf2_msgs/msg/TFMessage: "
                        f"{type(exc).__name__}: {exc}")
             return
-        gid = raw.attachment.gid
-        who = self._who(gid)
+        gid = raw.info.gid
+        # A wire that names the publishing node with each sample (ROS 1's callerid) is believed.
+        who = raw.info.publisher if self._authority is None and raw.info.publisher else self._who(gid)
         if not (is_static and self._names is not None):
             self._insert_all(msg if insert is None else records, who, is_static)
             return

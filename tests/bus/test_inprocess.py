@@ -1,4 +1,4 @@
-"""The node API on the in-process backend: delivery, latching, attachments, graph, bad payloads."""
+"""The node API on the in-process backend: delivery, latching, sample info, graph, bad payloads."""
 
 from __future__ import annotations
 
@@ -68,8 +68,9 @@ def test_raw_subscription_sees_type_and_attachment() -> None:
         pub.publish(String(data="two"))
     assert [m.topic for m in got] == ["/robot1/chatter"] * 2
     assert {m.typename for m in got} == {"std_msgs/msg/String"}
-    assert [m.attachment.sequence_number for m in got] == [1, 2]
-    assert all(m.attachment.gid == pub.gid for m in got)
+    assert [m.info.sequence_number for m in got] == [1, 2]
+    assert all(m.info.gid == pub.gid for m in got)
+    assert {m.encoding for m in got} == {"cdr"}
     assert codec_for(String).decode(got[1].payload).data == "two"
 
 
@@ -124,15 +125,6 @@ def test_graph_lists_topics_nodes_and_counts() -> None:
         assert b.get_node_names_and_namespaces() == [("listener", "/")]
 
 
-def test_entity_ids_follow_one_counter_per_context() -> None:
-    with Context(backend="inprocess", domain_id=109) as ctx:
-        node = Node("n", context=ctx)
-        pub = node.create_publisher(String, "a")
-        sub = node.create_subscription(String, "b", lambda m: None)
-        assert (node.node_id, pub.entity.entity_id, sub.entity.entity_id) == (0, 1, 2)  # type: ignore[union-attr]
-        assert pub.entity.node_id == 0
-
-
 @pytest.mark.parametrize(("name", "ns", "expected"), [
     ("tf", "/", "/tf"), ("tf", "/robot1", "/robot1/tf"), ("/tf", "/robot1", "/tf"),
     ("~/state", "/robot1", "/robot1/n/state"), ("a/b", "", "/a/b"),
@@ -176,7 +168,7 @@ def test_tf_records_share_the_tfmessage_key_and_bytes() -> None:
         node.create_subscription(TFMessage, "/tf", messages.append, QOS_TF)
         msg_pub = node.create_publisher(TFMessage, "/tf", QOS_TF)
         rec_pub = node.create_publisher(TFRecords, "/tf", QOS_TF)
-        assert msg_pub.key == rec_pub.key
+        assert codec_for(TFRecords).message_type() == codec_for(TFMessage).message_type()
         msg_pub.publish(TFMessage([make_transform("a", "b", (1.0, 2.0, 3.0), (0.0, 0.0, 0.6, 0.8), 7_000_000_001)]))
         rec_pub.publish(records[0])
     assert records[0] == records[1]
@@ -191,20 +183,20 @@ def test_graph_finds_a_publisher_by_the_gid_in_its_samples() -> None:
         node.create_raw_subscription("chatter", got.append)
         pub = node.create_publisher(String, "chatter")
         pub.publish(String(data="x"))
-        entity = node.context.graph.by_gid(got[0].attachment.gid)
+        entity = node.context.graph.by_gid(got[0].info.gid)
         assert entity is not None
         assert (entity.node_fqn, entity.topic) == ("/ns/talker", "/ns/chatter")
         assert node.context.graph.by_gid(bytes(16)) is None
 
 
 def test_gid_hashes_the_token_as_written() -> None:
-    from robotmodel.bus import Entity
+    from robotmodel.bus import Token
 
     # Another implementation may spell an equal QoS differently; the GID follows its text.
     token = ("@ros2_lv/0/8b20917502ee955ac4476e0266340d5c/0/10/MP/%/%/talker/%chatter/"
              "std_msgs::msg::dds_::String_/RIHS01_df668c740482bbd48fb39d76a70dfd4bd59db1288021743503259e948f6b1a18/"
              "1:2:1,7:,:,:,,")
-    entity = Entity.parse(token)
+    entity = Token.parse(token)
     assert entity.keyexpr != token  # ours leaves the default reliability and durability empty
     assert entity.gid == gid_of(token)
 

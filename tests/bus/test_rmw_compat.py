@@ -40,10 +40,10 @@ from robotmodel.bus import (
     QOS_TF_STATIC,
     Attachment,
     BusError,
-    Entity,
     Node,
     QoS,
     RawMessage,
+    Token,
     default_domain_id,
     gid_of,
     qos_from_keyexpr,
@@ -51,7 +51,7 @@ from robotmodel.bus import (
     ros_type_name,
     typestore,
 )
-from robotmodel.bus._attachment import is_attachment
+from robotmodel.bus._attachment import is_attachment, read_attachment
 from robotmodel.bus._config import rendezvous_endpoint
 from robotmodel.bus._qos import DURATION_INFINITE_NS, Durability, History, Liveliness, Reliability
 
@@ -98,16 +98,16 @@ def test_unspecified_durations_resolve_to_infinite() -> None:
 # --- reading tokens real nodes write ------------------------------------------------------
 
 def test_compact_default_qos_from_a_real_node_parses() -> None:
-    e = Entity.parse(token("MS", "::,10:,:,:,,", ids="0/12"))
+    e = Token.parse(token("MS", "::,10:,:,:,,", ids="0/12"))
     assert e.qos == QoS(10)
     assert (e.node_id, e.entity_id, e.topic, e.typename, e.type_hash) == (
         0, 12, "/chatter", "std_msgs/msg/String", STRING_HASH)
     # Every field empty: rmw_zenoh's defaults, depth 42.
-    assert Entity.parse(token("MS", "::,:,:,:,,")).qos == QoS(42)
+    assert Token.parse(token("MS", "::,:,:,:,,")).qos == QoS(42)
 
 
 def test_nested_namespace_enclave_and_topic_are_demangled() -> None:
-    e = Entity.parse(token("MP", "2::,5:,:,:,,", ns="%robots%r1", enclave="%secure%arm",
+    e = Token.parse(token("MP", "2::,5:,:,:,,", ns="%robots%r1", enclave="%secure%arm",
                            topic="%robots%r1%scan"))
     assert (e.namespace, e.enclave, e.topic, e.node_fqn) == ("/robots/r1", "/secure/arm", "/robots/r1/scan",
                                                             "/robots/r1/talker")
@@ -119,13 +119,13 @@ def test_nested_namespace_enclave_and_topic_are_demangled() -> None:
 def test_node_and_entity_ids_are_opaque_text_as_in_rmw_zenoh() -> None:
     # rmw_zenoh keeps the session, node and entity ids of a token as text and only asks
     # that they be non-empty; nodes are told apart by (session id, node id) text.
-    e = Entity.parse(token("MP", "::,7:,:,:,,", ids="n1/pub-a"))
+    e = Token.parse(token("MP", "::,7:,:,:,,", ids="n1/pub-a"))
     assert (e.node_id, e.entity_id) == ("n1", "pub-a")
     assert e.keyexpr == e.token
-    node = Entity.parse("@ros2_lv/0/abc/n1/n1/NN/%/%/talker")
+    node = Token.parse("@ros2_lv/0/abc/n1/n1/NN/%/%/talker")
     assert node.node_id == "n1" and node.keyexpr == node.token
     # Decimal ids read as numbers (ours are), so the two spellings name the same node.
-    assert Entity.parse(token("MP", "::,7:,:,:,,", ids="0/10")).node_id == 0
+    assert Token.parse(token("MP", "::,7:,:,:,,", ids="0/10")).node_id == 0
 
 
 @pytest.mark.parametrize(("text", "expected"), [
@@ -140,7 +140,7 @@ def test_node_and_entity_ids_are_opaque_text_as_in_rmw_zenoh() -> None:
 ])
 def test_policies_rmw_zenoh_accepts_are_read(text: str, expected: QoS) -> None:
     assert qos_from_keyexpr(text) == expected
-    assert Entity.parse(token("MS", text)).qos == expected
+    assert Token.parse(token("MS", text)).qos == expected
 
 
 @pytest.mark.parametrize("text", [
@@ -157,7 +157,7 @@ def test_tokens_rmw_zenoh_rejects_are_rejected(text: str) -> None:
     with pytest.raises(BusError):
         qos_from_keyexpr(text)
     with pytest.raises(BusError):
-        Entity.parse(token("MS", text))
+        Token.parse(token("MS", text))
 
 
 @pytest.mark.parametrize(("dds", "ros"), [
@@ -184,12 +184,14 @@ def test_attachment_bytes_by_hand() -> None:
     by_hand = (7).to_bytes(8, "little", signed=True) + (-5).to_bytes(8, "little", signed=True) + b"\x10" + GID
     assert Attachment(7, -5, GID).encode() == by_hand
     assert Attachment.decode(by_hand) == (7, -5, GID)
+    assert read_attachment(by_hand) == (7, -5, GID) and read_attachment(None) is None
 
 
 def test_trailing_bytes_after_the_gid_are_ignored() -> None:
     att = struct.pack("<qqB", 3, 1_700_000_000_000_000_000, 16) + GID + b"\x01\x02\x03\x04"
     assert is_attachment(att)
     assert Attachment.decode(att) == (3, 1_700_000_000_000_000_000, GID)
+    assert read_attachment(att) == (3, 1_700_000_000_000_000_000, GID)
 
 
 def test_labelled_attachment_of_jazzy_before_0_2_4_is_read() -> None:
@@ -206,6 +208,8 @@ def test_labelled_attachment_of_jazzy_before_0_2_4_is_read() -> None:
     # Sequence number 16 puts 0x10 where today's form has its GID length: still labelled.
     old16 = old.replace(struct.pack("<q", 9), struct.pack("<q", 16), 1)
     assert Attachment.decode(old16) == (16, 11, GID)
+    # The receive path's fast reader agrees.
+    assert read_attachment(old) == (9, 11, GID) and read_attachment(old16) == (16, 11, GID)
     # Written, we use only today's form.
     assert len(Attachment(9, 11, GID).encode()) == 33
 
@@ -218,6 +222,7 @@ def test_labelled_attachment_of_jazzy_before_0_2_4_is_read() -> None:
 ])
 def test_attachments_rmw_zenoh_cannot_read_are_refused(att: bytes) -> None:
     assert not is_attachment(att)
+    assert read_attachment(att) is None
     with pytest.raises(BusError):
         Attachment.decode(att)
 
@@ -266,7 +271,7 @@ def test_samples_from_another_writer_by_their_attachment(bus_env: dict[str, str]
                 assert arrived.wait_for(lambda: len(got) >= 2, 10), got
         finally:
             other.close()
-    assert [(m.attachment.sequence_number, m.attachment.source_timestamp_ns, m.attachment.gid) for m in got] == [
+    assert [(m.info.sequence_number, m.info.source_timestamp_ns, m.info.gid) for m in got] == [
         (5, 6, GID), (7, 8, GID)]
     assert [m.payload for m in got] == [payload, payload]
 
@@ -293,7 +298,7 @@ def test_graph_shows_a_real_nodes_tokens(bus_env: dict[str, str]) -> None:
         try:
             held = [other.liveliness().declare_token(t) for t in tokens]
             graph = node.context.graph
-            assert graph.wait_for(lambda es: len([e for e in es if e.zid == zid]) >= 3, 10)
+            assert graph.wait_for(lambda es: len([e for e in es if e.node_key.startswith(zid + "/")]) >= 3, 10)
             assert ("talker", "/robots/r1") in node.get_node_names_and_namespaces()
             topics = dict(node.get_topic_names_and_types())
             assert topics["/robots/r1/chatter"] == ["std_msgs/msg/String"]
@@ -303,7 +308,7 @@ def test_graph_shows_a_real_nodes_tokens(bus_env: dict[str, str]) -> None:
             assert pub is not None and pub.qos == QoS(7)
             for h in held:
                 h.undeclare()
-            assert graph.wait_for(lambda es: not [e for e in es if e.zid == zid], 10)
+            assert graph.wait_for(lambda es: not [e for e in es if e.node_key.startswith(zid + "/")], 10)
         finally:
             other.close()
 
@@ -327,7 +332,7 @@ def test_node_list_counts_nodes_as_rmw_zenohs_graph_cache(bus_env: dict[str, str
         try:
             held = [other.liveliness().declare_token(t) for t in tokens]
             graph = node.context.graph
-            assert graph.wait_for(lambda es: len([e for e in es if e.zid in (a, b, c)]) == 4, 10)
+            assert graph.wait_for(lambda es: len([e for e in es if e.node_key.split("/")[0] in (a, b, c)]) == 4, 10)
             listed = node.get_node_names_and_namespaces()
             assert sorted(n for n in listed if n[0] != "viewer") == [
                 ("lonely", "/"), ("talker", "/"), ("talker", "/")]
@@ -388,10 +393,11 @@ def test_rmw_zenoh_sessions_meet_ours_without_a_router(bus_env: dict[str, str]) 
             # ros2 node list's view from their side (once gossip has linked them to us).
             seen: list[str] = []
             end = time.monotonic() + 30
-            while viewer.entity.keyexpr not in seen and time.monotonic() < end:
+            mine = viewer.handle.token.keyexpr  # type: ignore[attr-defined]
+            while mine not in seen and time.monotonic() < end:
                 seen = [str(r.ok.key_expr) for r in a.liveliness().get(f"@ros2_lv/{domain}/**", timeout=2)
                         if r.ok is not None]
-            assert viewer.entity.keyexpr in seen
+            assert mine in seen
         finally:
             a.close()
             b.close()
@@ -409,10 +415,10 @@ def test_congestion_control_as_rmw_zenoh_chooses_it(bus_env: dict[str, str]) -> 
     with Node("talker") as node:
         tf = node.create_publisher("tf2_msgs/msg/TFMessage", "/tf", QOS_TF)
         every = node.create_publisher("std_msgs/msg/String", "/log", QoS(0, history=History.KEEP_ALL))
-        raw: Any = tf._pub
-        assert raw._pub.congestion_control == zenoh.CongestionControl.DROP
-        raw = every._pub
-        assert raw._pub.congestion_control == zenoh.CongestionControl.BLOCK
+        raw: Any = tf.handle
+        assert raw.raw._pub.congestion_control == zenoh.CongestionControl.DROP
+        raw = every.handle
+        assert raw.raw._pub.congestion_control == zenoh.CongestionControl.BLOCK
 
 
 # --- the domain id ------------------------------------------------------------------------

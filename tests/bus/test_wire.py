@@ -36,7 +36,7 @@ import time
 import xxhash
 import zenoh
 
-from robotmodel.bus import QOS_TF, Entity, Node, gid_of, topic_keyexpr
+from robotmodel.bus import QOS_TF, EntityKind, Node, Token, gid_of, topic_keyexpr
 from robotmodel.bus._config import rendezvous_endpoint
 from robotmodel.msgs import TFMessage, make_transform
 
@@ -69,7 +69,7 @@ def test_keyexpr_by_hand() -> None:
 
 def test_gid_matches_rmw_zenoh_xxhash_on_the_design_token() -> None:
     assert gid_of(DESIGN_TALKER).hex() == "eb85fa883b7846dc448a4501890ad062"
-    parsed = Entity.parse(DESIGN_TALKER)
+    parsed = Token.parse(DESIGN_TALKER)
     assert (parsed.topic, parsed.typename, parsed.qos.depth if parsed.qos else None) == (
         "/chatter", "std_msgs/msg/String", 7)
     assert parsed.keyexpr == DESIGN_TALKER
@@ -137,19 +137,33 @@ def test_a_live_tf_publisher_puts_rmw_zenohs_bytes(bus_env: dict[str, str]) -> N
 
 
 def test_design_doc_tokens_parse() -> None:
-    node = Entity.parse("@ros2_lv/2/aac3178e146ba6f1fc6e6a4085e77f21/0/0/NN/%/%/listener")
-    assert (node.domain_id, node.kind.value, node.namespace, node.node_name, node.enclave) == (
-        2, "NN", "/", "listener", "/")
+    node = Token.parse("@ros2_lv/2/aac3178e146ba6f1fc6e6a4085e77f21/0/0/NN/%/%/listener")
+    assert (node.domain_id, node.kind, node.namespace, node.node_name, node.enclave) == (
+        2, EntityKind.NODE, "/", "listener", "/")
     assert node.keyexpr == "@ros2_lv/2/aac3178e146ba6f1fc6e6a4085e77f21/0/0/NN/%/%/listener"
-    server = Entity.parse(
+    server = Token.parse(
         "@ros2_lv/2/f9980ee0495eaafb3e38f0d19e2eae12/0/10/SS/%/%/add_two_ints_server/%add_two_ints/"
         "example_interfaces::srv::dds_::AddTwoInts_/"
         "RIHS01_e118de6bf5eeb66a2491b5bda11202e7b68f198d6f67922cf30364858239c81a/::,10:,:,:,,")
-    assert (server.kind.value, server.topic, server.typename) == (
-        "SS", "/add_two_ints", "example_interfaces/srv/AddTwoInts")
+    assert (server.kind, server.topic, server.typename) == (
+        EntityKind.SERVICE, "/add_two_ints", "example_interfaces/srv/AddTwoInts")
     # A namespaced node: every '/' of the namespace and of the topic written '%'.
-    ns = Entity(0, "abc", 3, 4, Entity.parse(DESIGN_TALKER).kind, "/robot1", "talker", "/", "/robot1/chatter",
-                "std_msgs/msg/String", "RIHS01_x", Entity.parse(DESIGN_TALKER).qos)
+    ns = Token(0, "abc", 3, 4, Token.parse(DESIGN_TALKER).kind, "/robot1", "talker", "/", "/robot1/chatter",
+                "std_msgs/msg/String", "RIHS01_x", Token.parse(DESIGN_TALKER).qos)
     assert ns.keyexpr == ("@ros2_lv/0/abc/3/4/MP/%/%robot1/talker/%robot1%chatter/std_msgs::msg::dds_::String_/"
                           "RIHS01_x/::,7:,:,:,,")
-    assert Entity.parse(ns.keyexpr) == ns
+    assert Token.parse(ns.keyexpr) == ns
+
+
+def test_node_and_entity_ids_follow_one_counter_per_session(bus_env: dict[str, str]) -> None:
+    # rmw_zenoh numbers a session's nodes and their publishers and subscriptions with one counter.
+    from robotmodel.bus import Context
+
+    with Context() as ctx:
+        node = Node("n", context=ctx)
+        pub = node.create_publisher("std_msgs/msg/String", "a")
+        sub = node.create_subscription("std_msgs/msg/String", "b", lambda m: None)
+        other = Node("m", context=ctx)
+        tokens = [node.handle.token, pub.handle.token, other.handle.token]  # type: ignore[union-attr]
+        assert [(t.node_id, t.entity_id) for t in tokens] == [(0, 0), (0, 1), (3, 3)]
+        assert sub.handle is not None

@@ -49,8 +49,8 @@ def test_listener_fills_buffer_with_statics_and_dynamics(domain):
         assert (t.transform.translation.x, t.transform.translation.z) == (2.0, 1.0)
         frames = buffer.all_frames_as_yaml()
         # Broadcasters are named after the publishing node's fully qualified name.
-        assert f"broadcaster: '{static.node.entity.node_fqn}'" in frames
-        assert f"broadcaster: '{dynamic.node.entity.node_fqn}'" in frames
+        assert f"broadcaster: '{static.node.fully_qualified_name}'" in frames
+        assert f"broadcaster: '{dynamic.node.fully_qualified_name}'" in frames
         assert "most_recent_transform: 0.000000" in frames  # the static one
 
 
@@ -94,32 +94,30 @@ def test_closing_leaves_a_given_node_open_and_closes_an_owned_one(domain):
         assert (name, "/") not in observer.get_node_names_and_namespaces()
 
 
-def test_static_sample_before_its_publisher_token_is_reattributed(domain):
-    """A latched transform can arrive before its publisher's liveliness token; it is sent once,
-    so the listener must fix its broadcaster name when the token shows up."""
-    from robotmodel.bus import QOS_TF_STATIC, Attachment, Entity, EntityKind, codec_for, topic_keyexpr
+def test_static_sample_before_its_publisher_is_known_is_reattributed(domain):
+    """A latched transform can arrive before the graph shows its publisher; it is sent once,
+    so the listener must fix its broadcaster name when the publisher shows up."""
+    from robotmodel.bus import QOS_TF_STATIC, Entity, EntityKind, codec_for
+    from robotmodel.bus._inprocess import _BUS
 
     buffer = Buffer()
     with TransformListener(buffer, backend="inprocess", domain_id=domain), \
             Node("late_node", backend="inprocess", domain_id=domain) as node:
-        codec = codec_for(TFMessage)
-        ctx = node.context
-        entity = Entity(domain, ctx.backend.zid, node.node_id, ctx.next_id(), EntityKind.PUBLISHER, "/",
-                        "late_node", "/", "/tf_static", codec.typename, codec.type_hash, QOS_TF_STATIC.resolved())
-        # The sample goes out on the wire first, its token later.
-        raw_pub = ctx.backend.declare_publisher(
-            topic_keyexpr(domain, "/tf_static", codec.typename, codec.type_hash), QOS_TF_STATIC)
-        raw_pub.put(codec.encode(TFMessage([make_transform("world", "cam", (1, 0, 0))])),
-                    Attachment(1, time.time_ns(), entity.gid).encode())
+        pub = node.create_publisher(TFMessage, "/tf_static", QOS_TF_STATIC)
+        # Take the publisher out of the graph, as if its announcement had not arrived yet.
+        key, entity = next((k, e) for (d, k), e in _BUS.entities.items()
+                           if d == domain and e.kind is EntityKind.PUBLISHER and e.topic == "/tf_static")
+        _BUS.announce(domain, key, None)
+        pub.publish(TFMessage([make_transform("world", "cam", (1, 0, 0))]))
         assert "broadcaster: 'default_authority'" in buffer.all_frames_as_yaml()
-        token = ctx.backend.declare_token(entity.keyexpr)
+        assert isinstance(entity, Entity) and entity.gid == pub.gid
+        _BUS.announce(domain, key, entity)
         deadline = time.monotonic() + 10
         while "broadcaster: '/late_node'" not in buffer.all_frames_as_yaml():
             assert time.monotonic() < deadline, buffer.all_frames_as_yaml()
             time.sleep(0.01)
         assert buffer.lookup_transform("world", "cam", Time()).transform.translation.x == 1.0
-        token.close()
-        raw_pub.close()
+        assert codec_for(TFMessage).typename == entity.typename
 
 
 def test_listener_reports_a_bad_stamp_and_keeps_the_rest_of_the_message(domain, caplog):
