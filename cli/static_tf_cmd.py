@@ -24,7 +24,24 @@ from robotmodel.cli._static_args import (
     validation_errors,
 )
 
-__all__ = ["register", "run"]
+__all__ = ["HELP_MORE", "register", "run"]
+
+# Printed after ROS 2's own usage text on --help: the forms and words robotmodel takes beyond it.
+HELP_MORE = """
+
+also accepted:
+  x y z yaw pitch roll frame_id child_frame_id
+  x y z qx qy qz qw frame_id child_frame_id
+                        ROS 2's deprecated positional forms (logged as deprecated)
+  x y z yaw pitch roll frame_id child_frame_id period_in_ms
+  x y z qx qy qz qw frame_id child_frame_id period_in_ms
+                        ROS 1 tf's forms: republish on /tf every period_in_ms,
+                        stamped one period ahead
+  --connect ENDPOINT    zenoh endpoint to connect to (repeatable)
+  --namespace NS        the node's namespace (/tf and /tf_static stay global)
+  --ros-args ... [--]   ROS 2 arguments: -r /tf_static:=TOPIC remaps a topic,
+                        -r __ns:=/NS and -r __node:=NAME move and rename the node;
+                        -p NAME:=VALUE and --params-file FILE are named in a warning"""
 
 
 def register(sub: Any) -> None:
@@ -63,7 +80,7 @@ def run(args: argparse.Namespace) -> int:
         print(USAGE, flush=True)
         return 1
     if spec.help:
-        print(USAGE, flush=True)
+        print(USAGE + HELP_MORE, flush=True)
         return 0
 
     from robotmodel.tf_ros._node import unique_name

@@ -28,9 +28,30 @@ from robotmodel.cli._echo_fmt import (
 from robotmodel.cli._ros_args import RosArgsError, split_ros_words, warn_ignored_params
 from robotmodel.cli._rosfmt import ros_log
 
-__all__ = ["can_transform_reason", "register", "run"]
+__all__ = ["HELP_MORE", "can_transform_reason", "register", "run"]
 
 _NODE = "tf2_echo"
+
+# Printed after tf2_echo's own usage text on --help: the words robotmodel takes beyond ROS's.
+HELP_MORE = """
+robotmodel also takes:
+  --connect ENDPOINT   zenoh endpoint to connect to (repeatable)
+  --namespace NS       the node's namespace (/tf and /tf_static stay global)
+  --ros-args ... [--]  ROS 2 arguments: -r /tf:=TOPIC remaps a topic, -r __ns:=/NS and
+                       -r __node:=NAME move and rename the node; -p NAME:=VALUE and
+                       --params-file FILE are named in a warning (tf2_echo has no parameters)
+
+From a recording instead of the bus (ROS 1 .bag, ROS 2 bag folder, .db3 or .mcap):
+  tf2_echo --bag FILE source_frame target_frame [echo_rate] [--time T | --every DT] [--urdf FILE]
+  --bag FILE           read TF from this recording
+  --time T             the transform at T: seconds since the epoch, or +S for S seconds
+                       after the first recorded transform (exit 1 if it cannot be looked up)
+  --every DT           the transform every DT seconds of the recording
+                       (default 1/echo_rate: once per recorded second)
+  --urdf FILE          the robot whose /joint_states give TF when the recording has no /tf
+                       (default: the recorded /robot_description)
+  --no-progress        no progress bar on stderr
+"""
 
 
 def register(sub: Any) -> None:
@@ -73,7 +94,7 @@ def run(args: argparse.Namespace) -> int:
         return 2
     words, endpoints = split_connect(words)
     if words and words[0] in ("-h", "--help"):
-        print(USAGE, end="", flush=True)
+        print(USAGE + HELP_MORE, end="", flush=True)
         return 0
     try:
         words, bag_options = split_bag_words(words)

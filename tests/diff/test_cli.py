@@ -129,10 +129,10 @@ def test_help_names_the_exit_codes(tmp_path: Path) -> None:
     assert "Exit 0 when equal, 1 when different, 2 on error" in " ".join(done.stdout.split())
 
 
-def test_readme_example_is_what_the_command_prints(tmp_path: Path) -> None:
-    """The README's example: the elbow raised 25 mm and its upper limit lowered to 2 rad in the bundled arm."""
-    readme = (BUNDLED.parent / "README.md").read_text(encoding="utf-8")
-    block = readme.split("$ robotmodel diff old/arm.urdf.xacro new/arm.urdf.xacro\n", 1)[1].split("  ...\n", 1)[0]
+def test_docs_example_is_what_the_command_prints(tmp_path: Path) -> None:
+    """docs/commands/diff.md's example: the elbow raised 25 mm and its upper limit lowered to 2 rad in the bundled arm."""
+    page = (BUNDLED.parent / "docs" / "commands" / "diff.md").read_text(encoding="utf-8")
+    block = page.split("$ robotmodel diff old/arm.urdf.xacro new/arm.urdf.xacro\n", 1)[1].split("  ...\n", 1)[0]
     for side in ("old", "new"):
         (tmp_path / side).mkdir()
         shutil.copy(BUNDLED / "inertia_macros.xacro", tmp_path / side)
