@@ -50,7 +50,7 @@ def build_plan(launch: LaunchFile, workdir: Path, *, package_paths: Sequence[Pat
                browser: bool = True) -> LaunchPlan:
     """Map the declared nodes to processes; a literal robot_description is written into ``workdir``."""
     plan = LaunchPlan(skipped=list(launch.skipped), notes=list(launch.notes))
-    mapper = _Mapper(launch.params, workdir, package_paths, browser)
+    mapper = _Mapper(launch.params, workdir, package_paths, browser, launch.packages)
     for node in launch.nodes:
         key = (node.pkg, node.executable)
         label = f"{node.full_name} ({node.pkg}/{node.executable})"
@@ -87,8 +87,9 @@ def _after_params_file(node: NodeDecl, key: tuple[str, str]) -> frozenset[str]:
 
 class _Mapper:
     def __init__(self, params: Mapping[str, Param], workdir: Path, package_paths: Sequence[Path],
-                 browser: bool) -> None:
+                 browser: bool, found: Sequence[Path] = ()) -> None:
         self.params = params
+        self.found = list(found)
         self.workdir = workdir
         self.package_paths = list(package_paths)
         self.browser = browser
@@ -99,7 +100,11 @@ class _Mapper:
             return ProcessSpec(node.full_name, "static_transform_publisher",
                                ("static-transform-publisher", *_split(node)), node.required)
         if key in _RVIZ:
-            return ProcessSpec(node.full_name, "rviz", ("view", "--follow", *self._paths(), *self._page()),
+            # The viewer sees only the description's text: the packages the launch file found are
+            # where its package:// URIs point (the other nodes find them beside their xacro file).
+            found = tuple(w for p in self.found if not any(p == q or q in p.parents for q in self.package_paths)
+                          for w in ("--package-path", str(p)))
+            return ProcessSpec(node.full_name, "rviz", ("view", "--follow", *self._paths(), *found, *self._page()),
                                node.required)
         description = self._description(node)
         if key in _RSP:

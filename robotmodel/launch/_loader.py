@@ -61,6 +61,7 @@ class LaunchFile:
     params: dict[str, Param]
     skipped: list[str]
     notes: list[str]
+    packages: tuple[Path, ...] = ()  # the packages its $(find)s resolved, in first-use order
 
 
 @dataclass
@@ -92,7 +93,7 @@ def load_launch_file(path: Path, args: Mapping[str, str], package_paths: Sequenc
         loader.load_top(path.resolve(), dict(args))
     except RecursionError:
         raise LaunchError(f"{path}: elements nested too deep") from None
-    return LaunchFile(loader.nodes, loader.params, loader.skipped, loader.notes)
+    return LaunchFile(loader.nodes, loader.params, loader.skipped, loader.notes, tuple(loader.found))
 
 
 class _Loader:
@@ -103,6 +104,7 @@ class _Loader:
         self.skipped: list[str] = []
         self.notes: list[str] = []
         self.expanded: set[XacroSource] = set()
+        self.found: dict[Path, None] = {}
 
     def load_top(self, path: Path, args: dict[str, str]) -> None:
         root = parse_file(path)
@@ -112,7 +114,7 @@ class _Loader:
 
     # -- helpers -----------------------------------------------------------------
     def _ctx(self, scope: _Scope, elem: Element) -> SubstContext:
-        return SubstContext(scope.path, elem.line, scope.dialect, scope.args, self.package_paths)
+        return SubstContext(scope.path, elem.line, scope.dialect, scope.args, self.package_paths, self.found)
 
     def _attr(self, scope: _Scope, elem: Element, name: str, *, required: bool = False) -> str | None:
         raw = elem.attrib.get(name)

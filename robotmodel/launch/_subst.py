@@ -104,12 +104,14 @@ def _find(sub: Sub, words: list[str], ctx: SubstContext) -> str:
 
     _count(sub, words, ctx, 1, 1)
     try:
-        return str(find_package(words[0], start=ctx.path, package_paths=ctx.package_paths))
+        root = find_package(words[0], start=ctx.path, package_paths=ctx.package_paths)
     except PackageNotFoundError:
         if words[0] == "xacro":
             # Only ever the folder of the xacro program, which runs in-process here.
             return "[xacro]"
         raise
+    ctx.found_packages[root] = None
+    return str(root)
 
 
 def _find_prefix(sub: Sub, words: list[str], ctx: SubstContext) -> str:

@@ -7,7 +7,7 @@ ROS 2 groups an argument with spaces in single (or double) quotes; ROS 1 has no 
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from robotmodel.errors import LaunchError
@@ -41,6 +41,9 @@ class SubstContext:
     dialect: Dialect
     args: Mapping[str, str | None]
     package_paths: Sequence[Path]
+    # Every package a $(find) resolved, shared by the whole load: the viewer gets them, as it has
+    # only the description's text and no file to find package:// URIs beside.
+    found_packages: dict[Path, None] = field(default_factory=dict)
 
     def error(self, text: str) -> LaunchError:
         """A LaunchError starting with this file and line."""

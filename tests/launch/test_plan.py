@@ -279,3 +279,21 @@ def test_ros1_jsp_reads_use_gui_and_rate_from_its_namespace(pkg, tmp_path):
     assert argv(plan_of(path, pkg.root, tmp_path, gui="false")) == {
         "/joint_state_publisher": ("joint-state-publisher", str(pkg.xacro), "--package-path", str(pkg.root)),
     }
+
+
+def test_viewer_gets_the_packages_the_launch_file_found(pkg, tmp_path):
+    # Started by path with no --package-path, the launcher finds probe_description beside the
+    # file; the viewer, which has only /robot_description's text, must be told where it is, or
+    # the description's package:// meshes cannot resolve (they were drawn as placeholders).
+    top = pkg.launch("display.launch", """
+        <launch>
+          <param name="robot_description" command="$(find xacro)/xacro $(find probe_description)/urdf/probe.urdf.xacro"/>
+          <node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>
+          <node pkg="rviz" type="rviz" name="rviz"/>
+        </launch>
+    """)
+    plan = build_plan(load_launch_file(top, {}), tmp_path, browser=False)
+    assert argv(plan)["/rviz"][:4] == ("view", "--follow", "--package-path", str(pkg.dir.resolve()))
+    # A path the user gave is not repeated.
+    plan = plan_of(top, pkg.dir, tmp_path)
+    assert argv(plan)["/rviz"].count("--package-path") == 1
