@@ -126,6 +126,7 @@ class Ros1Node:
         self._subscriptions: dict[str, tuple[Subscription, list[Ros1Subscriber]]] = {}
         self._param_callbacks: dict[str, list[ParamCallback]] = {}
         self._closed = False
+        self._close_done = threading.Event()
         self.shutdown_requested = threading.Event()
         self.shutdown_reason = ""
         self._tcpros = TcprosServer(self._publication, host=address.host, bind=address.bind, callerid=self.name,
@@ -353,11 +354,26 @@ class Ros1Node:
         return self.shutdown_requested.wait(timeout)
 
     def close(self) -> None:
-        """Unregister every topic and parameter subscription at the master, then stop serving."""
+        """Unregister every topic and parameter subscription at the master, then stop serving.
+
+        Returns once that is done, also when another thread (a ``shutdown`` call) closes the node.
+        """
         with self._lock:
             if self._closed:
-                return
-            self._closed = True
+                closing_elsewhere = True
+            else:
+                closing_elsewhere = False
+                self._closed = True
+        if closing_elsewhere:
+            self._close_done.wait(30)
+            return
+        try:
+            self._close()
+        finally:
+            self._close_done.set()
+
+    def _close(self) -> None:
+        with self._lock:
             pubs, self._publications = self._publications, {}
             subs, self._subscriptions = self._subscriptions, {}
             params, self._param_callbacks = self._param_callbacks, {}
