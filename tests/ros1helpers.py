@@ -1,8 +1,8 @@
 """Real ROS 1 for tests/ros1: a private roscore per test (Debian 12's), rospy peers, robotmodel nodes.
 
 Each test gets its own master port, ROS_HOME and ROS_HOSTNAME=127.0.0.1. Processes start in
-their own process group (roscore runs rosmaster and rosout under it) and the whole group is
-killed at the end. Skips with one line where Debian's ROS 1 is not installed.
+their own process group, killed at the end; roslaunch starts rosmaster and rosout in sessions
+of their own, so every process holding the test's ROS_HOME is killed as well. Skips with one line where Debian's ROS 1 is not installed.
 """
 
 from __future__ import annotations
@@ -122,6 +122,7 @@ class Ros1World:
         self.port = free_port()
         self.uri = f"http://127.0.0.1:{self.port}"
         home.mkdir(parents=True, exist_ok=True)
+        self.home = home
         self.env = dict(os.environ)
         self.env.update(ROS_MASTER_URI=self.uri, ROS_HOSTNAME="127.0.0.1", ROS_HOME=str(home),
                         ROS_LOG_DIR=str(home / "log"), PYTHONUNBUFFERED="1")
@@ -175,12 +176,51 @@ class Ros1World:
             found += [f"{kind} {name}" for name, nodes in entries if node_name in nodes]
         return found
 
+    def started_here(self) -> list[int]:
+        """Pids of live processes started with this world's ROS_HOME (roslaunch puts rosmaster and rosout
+        in sessions of their own, so roscore's process group does not hold them)."""
+        needle = f"ROS_HOME={self.home}".encode()
+        found = []
+        for entry in Path("/proc").iterdir():
+            if not entry.name.isdigit():
+                continue
+            try:
+                environ = (entry / "environ").read_bytes()
+                state = (entry / "stat").read_text().rsplit(")", 1)[1].split()[0]
+            except (OSError, IndexError):
+                continue
+            if state != "Z" and needle in environ.split(b"\0"):
+                found.append(int(entry.name))
+        return found
+
+    def kill_master(self) -> None:
+        """SIGKILL roscore, rosmaster and rosout of this world."""
+        self.roscore.kill()
+        for pid in self.started_here():
+            with contextlib.suppress(OSError):
+                cmdline = Path(f"/proc/{pid}/cmdline").read_bytes()
+                if b"rosmaster" in cmdline or b"rosout" in cmdline:
+                    os.kill(pid, signal.SIGKILL)
+        wait_until(lambda: not any(b"rosmaster" in _cmdline(pid) or b"rosout" in _cmdline(pid)
+                                   for pid in self.started_here()), 15, "the master's processes to end")
+
     def reap(self) -> None:
-        """Close our nodes, kill every process group (roscore's last)."""
+        """Close our nodes, kill every process group, then anything else left on this master."""
         for node in self.nodes:
             node.close()
         for proc in reversed(self.procs):
             proc.kill()
+        for pid in self.started_here():
+            with contextlib.suppress(OSError):
+                os.kill(pid, signal.SIGKILL)
+        wait_until(lambda: not self.started_here(), 15, f"every process on {self.uri} to end")
+
+
+def _cmdline(pid: int) -> bytes:
+    try:
+        return Path(f"/proc/{pid}/cmdline").read_bytes()
+    except OSError:
+        return b""
 
 
 

@@ -147,8 +147,13 @@ class ParamClient:
         return bool(self._master.call("hasParam", key))
 
     def search_param(self, key: str) -> str | None:
-        """searchParam: the full name of ``key`` found up the caller's namespace, or None."""
-        found = self._master.call("searchParam", key)
+        """Call searchParam: the full name of ``key`` found up the caller's namespace, or None (as rospy)."""
+        try:
+            found = self._master.call("searchParam", key)
+        except MasterError as exc:
+            if exc.code == -1:  # rosmaster's "Cannot find parameter [...] in an upwards search"
+                return None
+            raise
         return str(found) if found else None
 
     def get_param_names(self) -> list[str]:

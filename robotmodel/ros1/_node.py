@@ -59,12 +59,20 @@ class Ros1Publisher:
         self.type: Ros1Type = publication.type
 
     def publish(self, message: Any) -> None:
-        """Serialize ``message`` and send it to every subscriber."""
-        self._publication.publish(serialize(message, self.type.name))
+        """Serialize ``message`` and send it to every subscriber.
+
+        After :meth:`close` this raises :class:`Ros1Error`; after the node shut down (``rosnode
+        kill`` may come between a loop's check and its publish) it does nothing, as roscpp does.
+        """
+        self.publish_raw(serialize(message, self.type.name))
 
     def publish_raw(self, data: bytes) -> None:
-        """Send already serialized ROS 1 bytes."""
-        self._publication.publish(data)
+        """Send already serialized ROS 1 bytes (see :meth:`publish`)."""
+        try:
+            self._publication.publish(data)
+        except Ros1Error:
+            if not self._node.is_shutdown:
+                raise
 
     @property
     def subscriber_count(self) -> int:

@@ -6,7 +6,8 @@ headers and reads length-prefixed messages. A dropped connection is retried with
 backoff while the publisher is still listed, asking requestTopic again so a publisher that
 restarted on a new port is found; a publisher whose slave API refuses connections is gone, and
 the next publisherUpdate that lists it (or its successor) starts a new connection. A refusal
-(``error`` in the publisher's header) or a type/md5sum mismatch is one log line and no retry.
+(``error`` in the publisher's header), a type/md5sum mismatch or a header that does not parse
+is one log line, and that publisher is not tried again while the master keeps listing it.
 """
 
 from __future__ import annotations
@@ -96,14 +97,17 @@ class _Inbound:
 
     def _run(self) -> None:
         attempt = 0
+        refused = False
         while not self._stop.is_set():
             try:
                 sock = self._connect()
             except _Refused as exc:
                 _log.warning("topic %s: %s", self.sub.topic, exc)
+                refused = True
                 break
             except Ros1Error as exc:  # a header that does not parse: the peer is not TCPROS
                 _log.warning("topic %s: publisher %s: %s; dropping it", self.sub.topic, self.pub_uri, exc)
+                refused = True
                 break
             except (OSError, EOFError, http.client.HTTPException, xmlrpc.client.Error, ValueError) as exc:
                 if getattr(exc, "errno", None) == errno.ECONNREFUSED and not self.connected and attempt > 0:
@@ -125,7 +129,8 @@ class _Inbound:
             self.connected = False
             attempt = 1
         self._stop.set()
-        self.sub.forget(self)
+        if not refused:  # a refused publisher stays known (and not retried) while the master lists it
+            self.sub.forget(self)
 
     def _receive(self, sock: socket.socket) -> None:
         header = self.header

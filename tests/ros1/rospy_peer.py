@@ -36,15 +36,15 @@ def _payload(msg: object) -> str:
 
 
 def _message(cls: type, text: str, i: int) -> object:
-    if cls is String:
-        return String(data=f"{text} {i}")
+    if issubclass(cls, String):
+        return cls(data=f"{text} {i}")
     t = TransformStamped()
     t.header.frame_id = "world"
     t.header.stamp = rospy.Time(1700000000, i)
     t.child_frame_id = f"{text}{i}"
     t.transform.translation.x = float(i)
     t.transform.rotation.w = 1.0
-    return TFMessage(transforms=[t])
+    return cls(transforms=[t])
 
 
 def main() -> int:
