@@ -195,7 +195,8 @@ class Ros1World:
 
     def kill_master(self) -> None:
         """SIGKILL roscore, rosmaster and rosout of this world."""
-        self.roscore.kill()
+        with contextlib.suppress(ProcessLookupError):
+            os.killpg(self.roscore.popen.pid, signal.SIGKILL)
         for pid in self.started_here():
             with contextlib.suppress(OSError):
                 cmdline = Path(f"/proc/{pid}/cmdline").read_bytes()
@@ -203,16 +204,21 @@ class Ros1World:
                     os.kill(pid, signal.SIGKILL)
         wait_until(lambda: not any(b"rosmaster" in _cmdline(pid) or b"rosout" in _cmdline(pid)
                                    for pid in self.started_here()), 15, "the master's processes to end")
+        self.roscore.kill()
 
     def reap(self) -> None:
-        """Close our nodes, kill every process group, then anything else left on this master."""
+        """Close our nodes, kill every process group and anything else left on this master, then reap."""
         for node in self.nodes:
             node.close()
         for proc in reversed(self.procs):
-            proc.kill()
+            with contextlib.suppress(ProcessLookupError):
+                os.killpg(proc.popen.pid, signal.SIGKILL)
+        # before waiting for output to end: rosmaster and rosout hold roscore's stdout open
         for pid in self.started_here():
             with contextlib.suppress(OSError):
                 os.kill(pid, signal.SIGKILL)
+        for proc in self.procs:
+            proc.kill()
         wait_until(lambda: not self.started_here(), 15, f"every process on {self.uri} to end")
 
 

@@ -256,7 +256,12 @@ class Ros1Node:
             first = resolved not in self._param_callbacks
             self._param_callbacks.setdefault(resolved, []).append(callback)
         if first:
-            return self.params.subscribe_param(resolved, self.uri)
+            try:
+                return self.params.subscribe_param(resolved, self.uri)
+            except MasterError:
+                with self._lock:
+                    self._param_callbacks.pop(resolved, None)
+                raise
         return self.params.get_param(resolved) if self.params.has_param(resolved) else {}
 
     def unsubscribe_param(self, key: str) -> None:

@@ -220,9 +220,11 @@ class Subscription:
             return [uri for uri, conn in self._inbound.items() if conn.connected]
 
     def bus_info(self) -> list[list[Any]]:
-        """Rows for getBusInfo: ``[id, publisher URI, 'i', 'TCPROS', topic, connected, text]``."""
+        """Rows for getBusInfo: ``[id, publisher callerid, 'i', 'TCPROS', topic, connected, text]``."""
         with self.lock:
-            return [[c.id, c.pub_uri, "i", "TCPROS", self.topic, c.connected, c.info] for c in self._inbound.values()]
+            # the publisher's callerid once known, as roscpp reports it (rosnode info: "from: /talker")
+            return [[c.id, c.callerid or c.pub_uri, "i", "TCPROS", self.topic, c.connected, c.info]
+                    for c in self._inbound.values()]
 
     def bus_stats(self) -> list[Any]:
         """The subscriber row of getBusStats: ``[topic, [[id, bytes, drop estimate, connected], ...]]``."""
