@@ -62,13 +62,11 @@ class _Inbound:
         self.thread = threading.Thread(target=self._run, name=f"ros1-sub{sub.topic}", daemon=True)
         self.thread.start()
 
-    @property
-    def done(self) -> bool:
-        return self._stop.is_set()
-
     def _endpoint(self) -> tuple[str, int]:
         answer = xmlrpc_call(self.pub_uri, "requestTopic", self.sub.callerid, self.sub.topic, [["TCPROS"]],
                              timeout=_CONNECT_TIMEOUT)
+        if not isinstance(answer, list) or len(answer) != 3:
+            raise _Refused(f"requestTopic at {self.pub_uri} returned {answer!r}, not [code, statusMessage, value]")
         code, status, protocol = answer
         if code != 1:
             raise _Refused(f"requestTopic at {self.pub_uri} failed: {status}")
