@@ -16,7 +16,11 @@ caller (and the CLI) can catch one class and print one line. The tree::
     │   └── JointValueError         unknown joint, wrong length, NaN/inf, out of limits
     │       └── UnknownJointError   a joint name the robot does not have (every API)
     ├── BusError                    the bus: a bad topic/node name or endpoint, a session that
-    │                               would not open (see robotmodel.bus)
+    │   │                           would not open (see robotmodel.bus)
+    │   └── Ros1Error               the ROS 1 wire (see robotmodel.ros1): an unknown message type,
+    │       │                       a bad address or connection header
+    │       └── MasterError         the ROS master refused a call ([code, statusMessage, value]
+    │                               with code != 1) or could not be reached; names the master URI
     ├── MessageError                a message field its ROS type cannot carry, or bytes that
     │                               do not decode as the type (also a ValueError)
     ├── PublisherError              a state publisher's parameter out of range, e.g.
@@ -57,6 +61,7 @@ __all__ = [
     "KinematicsError",
     "LaunchError",
     "LookupException",
+    "MasterError",
     "MessageError",
     "PackageNotFoundError",
     "PublisherError",
@@ -64,6 +69,7 @@ __all__ = [
     "ResourceError",
     "RevisionError",
     "RobotModelError",
+    "Ros1Error",
     "TimeoutException",
     "TransformException",
     "URDFError",
@@ -161,6 +167,24 @@ class BusError(RobotModelError):
     A bad topic or node name, a bad QoS text, a zenoh session that would not open, or an
     endpoint that is not a zenoh locator; the message names it.
     """
+
+
+class Ros1Error(BusError):
+    """The ROS 1 wire could not do what was asked; the text names the node, topic, peer or type."""
+
+
+class MasterError(Ros1Error):
+    """The ROS master answered a call with a failure code, or could not be reached.
+
+    ``master_uri`` and ``method`` name the call; ``code`` is ROS's status code (``-1`` caller
+    error, ``0`` failure) or None when the master was unreachable.
+    """
+
+    def __init__(self, message: str, *, master_uri: str, method: str, code: int | None = None) -> None:
+        super().__init__(message)
+        self.master_uri = master_uri
+        self.method = method
+        self.code = code
 
 
 class MessageError(RobotModelError, ValueError):

@@ -1,0 +1,142 @@
+"""TCPROS against real ROS 1 (Debian 12's rospy, rostopic): both directions, latching, md5 refusals, restarts."""
+
+from __future__ import annotations
+
+import logging
+import time
+
+import pytest
+from ros1helpers import Ros1World, wait_until
+
+from robotmodel.ros1 import message_type, typestore
+
+TYPES = typestore().types
+
+
+def _string(text: str) -> object:
+    return TYPES["std_msgs/msg/String"](data=text)
+
+
+def _tf(child: str, sec: int, nsec: int, x: float) -> object:
+    t = TYPES
+    header = t["std_msgs/msg/Header"](seq=0, stamp=t["builtin_interfaces/msg/Time"](sec=sec, nanosec=nsec),
+                                      frame_id="world")
+    transform = t["geometry_msgs/msg/Transform"](
+        translation=t["geometry_msgs/msg/Vector3"](x=x, y=0.0, z=0.0),
+        rotation=t["geometry_msgs/msg/Quaternion"](x=0.0, y=0.0, z=0.0, w=1.0))
+    stamped = t["geometry_msgs/msg/TransformStamped"](header=header, child_frame_id=child, transform=transform)
+    return t["tf2_msgs/msg/TFMessage"](transforms=[stamped])
+
+
+def test_rostopic_echo_and_rospy_receive_robotmodels_string_and_tf(ros1: Ros1World) -> None:
+    node = ros1.node("rm_talker")
+    chatter = node.advertise("/chatter", "std_msgs/String", latch=True)
+    chatter.publish(_string("hello from robotmodel"))
+    echoed = ros1.tool("rostopic", "echo", "-n", "1", "/chatter")
+    assert 'data: "hello from robotmodel"' in echoed, echoed
+
+    tf = node.advertise("/tf", "tf2_msgs/TFMessage")
+    listener = ros1.rospy("sub", "/tf", "tf2_msgs/TFMessage")
+    listener.wait_line("^ready")
+    wait_until(lambda: tf.subscriber_count >= 1, 30, "rospy's connection to /tf")
+    for i in range(3):
+        tf.publish(_tf(f"link{i}", 1700000000, 123456789 + i, 0.5 * i))
+    for i in range(3):
+        listener.wait_line(rf"^got world->link{i}@1700000000\.{123456789 + i:09d}:{0.5 * i:.3f}$")
+
+
+def test_robotmodel_receives_rospys_messages(ros1: Ros1World) -> None:
+    got: list[str] = []
+    node = ros1.node("rm_listener")
+    sub = node.subscribe("/chatter", "std_msgs/String", lambda m: got.append(m.data))
+    talker = ros1.rospy("pub", "/chatter", "std_msgs/String", "--text", "from rospy")
+    talker.wait_line("^ready")
+    wait_until(lambda: len(got) >= 3, 30, "three messages from rospy")
+    numbers = [int(text.rsplit(" ", 1)[1]) for text in got[:3]]
+    assert all(text.startswith("from rospy ") for text in got)
+    assert numbers == sorted(numbers) and len(set(numbers)) == 3  # in order, no duplicates
+    assert sub.publisher_uris and sub.publisher_uris[0].startswith("http://127.0.0.1:")
+
+
+def test_late_robotmodel_subscriber_gets_rospys_latched_message(ros1: Ros1World) -> None:
+    talker = ros1.rospy("pub", "/latched", "std_msgs/String", "--latch", "--count", "1", "--text", "kept")
+    talker.wait_line("^published 1$")
+    got: list[str] = []
+    ros1.node("rm_late").subscribe("/latched", "std_msgs/String", lambda m: got.append(m.data))
+    wait_until(lambda: got, 30, "the latched message")
+    assert got == ["kept 0"]
+
+
+def test_late_rospy_subscriber_gets_robotmodels_latched_message(ros1: Ros1World) -> None:
+    node = ros1.node("rm_latcher")
+    pub = node.advertise("/tf_static", "tf2_msgs/TFMessage", latch=True)
+    pub.publish(_tf("old", 1, 0, 1.0))
+    pub.publish(_tf("static", 1700000001, 5, 2.0))  # only the last one is latched
+    listener = ros1.rospy("sub", "/tf_static", "tf2_msgs/TFMessage")
+    listener.wait_line(r"^got world->static@1700000001\.000000005:2\.000$")
+    assert listener.count("^got ") == 1
+
+
+def test_wrong_md5_is_refused_with_ros_text_on_both_sides(ros1: Ros1World, caplog: pytest.LogCaptureFixture) -> None:
+    caplog.set_level(logging.INFO, logger="robotmodel.ros1")
+    real = message_type("std_msgs/String").md5sum
+    fake = "0123456789abcdef0123456789abcdef"
+    # a rospy subscriber with another md5sum asks robotmodel's publisher
+    node = ros1.node("rm_md5")
+    pub = node.advertise("/typed", "std_msgs/String", latch=True)
+    pub.publish(_string("must not arrive"))
+    bad_sub = ros1.rospy("sub", "/typed", "std_msgs/String", "--md5", fake, "--name", "bad_sub")
+    text = (f"Client [/bad_sub] wants topic [/typed] to have datatype/md5sum [std_msgs/String/{fake}], "
+            f"but our version has [std_msgs/String/{real}] Dropping connection.")
+    bad_sub.wait_line("remote error reported: " + _rx(text))
+    wait_until(lambda: any(text in r.getMessage() for r in caplog.records), 10, "robotmodel's refusal log line")
+    assert bad_sub.count("^got ") == 0 and pub.subscriber_count == 0
+
+    # robotmodel subscribes to a rospy publisher with another md5sum
+    bad_pub = ros1.rospy("pub", "/typed2", "std_msgs/String", "--md5", fake, "--name", "bad_pub")
+    bad_pub.wait_line("^ready")
+    got: list[object] = []
+    node.subscribe("/typed2", "std_msgs/String", got.append)
+    text = (f"Client [/rm_md5] wants topic [/typed2] to have datatype/md5sum [std_msgs/String/{real}], "
+            f"but our version has [std_msgs/String/{fake}] Dropping connection.")
+    bad_pub.wait_line(_rx(text))
+    wait_until(lambda: any("remote error reported: " + text in r.getMessage() for r in caplog.records), 10,
+               "robotmodel's log line of rospy's refusal")
+    bad_pub.wait_line("^published 3$")
+    assert got == []
+
+
+def _rx(text: str) -> str:
+    import re
+
+    return re.escape(text)
+
+
+def test_rospy_publisher_killed_and_restarted_robotmodel_recovers(ros1: Ros1World) -> None:
+    got: list[str] = []
+    ros1.node("rm_sub").subscribe("/chatter", "std_msgs/String", lambda m: got.append(m.data))
+    first = ros1.rospy("pub", "/chatter", "std_msgs/String", "--name", "talker", "--text", "first")
+    wait_until(lambda: any(t.startswith("first") for t in got), 30, "messages of the first talker")
+    first.kill()  # SIGKILL to its process group: no unregistration
+    second = ros1.rospy("pub", "/chatter", "std_msgs/String", "--name", "talker", "--text", "second")
+    second.wait_line("^ready")
+    up = time.monotonic()
+    wait_until(lambda: any(t.startswith("second") for t in got), 30, "messages of the restarted talker")
+    recovery = time.monotonic() - up
+    print(f"recovered {recovery:.3f} s after the restarted publisher registered")
+    assert recovery < 2.0, f"recovered after {recovery:.2f} s"
+
+
+def test_robotmodel_publisher_killed_and_restarted_rospy_recovers(ros1: Ros1World) -> None:
+    listener = ros1.rospy("sub", "/chatter", "std_msgs/String")
+    listener.wait_line("^ready")
+    first = ros1.robotmodel_peer("/rm_talker", "/chatter", "first")
+    listener.wait_line("^got first ")
+    first.kill()
+    second = ros1.robotmodel_peer("/rm_talker", "/chatter", "second")
+    second.wait_line("^ready")
+    up = time.monotonic()
+    listener.wait_line("^got second ")
+    recovery = time.monotonic() - up
+    print(f"recovered {recovery:.3f} s after the restarted publisher registered")
+    assert recovery < 2.0, f"recovered after {recovery:.2f} s"
