@@ -112,3 +112,20 @@ def test_tf_export_errors_leave_no_file(bag, tmp_path):
     else:
         proc = run("tf-export", "--bag", str(bag), "world", "cam", "-o", str(tmp_path / "p.parquet"))
         assert proc.returncode == 0
+
+
+def test_view_frames_from_a_bag_with_a_control_character_in_a_frame_name(tmp_path):
+    import yaml
+    from recording.bagfiles import Msg
+
+    t0 = 1_700_000_000 * 10**9
+    msgs = [Msg("/tf", t0 + k * 10**8, "tf", [("odom", "cam\x07era", t0 + k * 10**8, (k, 0, 0, 0, 0, 0, 1)),
+                                              ("odom", 'b"ase', t0 + k * 10**8, (0, k, 0, 0, 0, 0, 1))])
+            for k in range(5)]
+    path = write(tmp_path / "odd", "mcap", msgs)
+    proc = run("view-frames", "--bag", str(path), "-o", "tree", cwd=tmp_path)
+    assert proc.returncode == 0, proc.stderr
+    assert "Traceback" not in proc.stderr
+    assert set(yaml.safe_load((tmp_path / "tree.yaml").read_text())) == {"cam\x07era", 'b"ase'}
+    assert (tmp_path / "tree.pdf").read_bytes().startswith(b"%PDF")
+    assert '"odom" -> "cam\\\\x07era"' in (tmp_path / "tree.gv").read_text()
