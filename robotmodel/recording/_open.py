@@ -18,7 +18,7 @@ from functools import lru_cache
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from robotmodel.errors import RecordingError
+from robotmodel.errors import MessageError, RecordingError
 
 if TYPE_CHECKING:
     from rosbags.typesys.store import Typestore
@@ -227,9 +227,16 @@ class Recording:
                               f"message(s){where}: {_reason(exc)}")
 
     def deserialize(self, data: bytes, msgtype: str) -> Any:
-        """A rosbags message object of ``msgtype`` from this recording's serialization."""
-        if self.ros1:
-            return ros1_typestore().deserialize_ros1(data, msgtype)
-        from robotmodel.msgs import typestore
+        """A rosbags message object of ``msgtype`` from this recording's serialization.
 
-        return typestore().deserialize_cdr(data, msgtype)
+        Raises :class:`MessageError` for bytes that do not decode as ``msgtype``: the
+        message is bad, not the file.
+        """
+        try:
+            if self.ros1:
+                return ros1_typestore().deserialize_ros1(data, msgtype)
+            from robotmodel.msgs import typestore
+
+            return typestore().deserialize_cdr(data, msgtype)
+        except reader_errors() as exc:
+            raise MessageError(f"cannot decode {len(data)} bytes as {msgtype}: {_reason(exc)}") from None
