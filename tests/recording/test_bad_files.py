@@ -161,3 +161,22 @@ def test_undecodable_messages_are_skipped_and_counted(tmp_path, fmt, caplog):
     assert "Translation: [10.000, 3.000, 0.000]" in proc.stdout
     (line,) = proc.stderr.splitlines()
     assert "skipped 4 message(s) that do not decode" in line and "truncated" not in line
+
+
+def test_db3_with_a_damaged_page_is_one_line(tmp_path):
+    """A .db3 whose SQLite pages are damaged past what opening reads: one line naming the file, exit 1."""
+    msgs = tf_msgs(100)
+    msgs.insert(50, Msg("/robot_description", T0 + 495 * 10**6, "str", "Z" * 30000))  # spills into overflow pages
+    path = write(tmp_path / "flipped", "db3", msgs)
+    data = bytearray(path.read_bytes())
+    page = int.from_bytes(data[16:18], "big")  # SQLite's header: the page size
+    # An overflow page of the description (all its bytes after the 4-byte link are the text) whose
+    # link to the next page is then bent out of the file: SQLite finds it only when reading the row.
+    overflow = [k for k in range(len(data) // page) if data[k * page + 4:(k + 1) * page] == b"Z" * (page - 4)
+                and int.from_bytes(data[k * page:k * page + 4], "big")]
+    assert overflow
+    data[overflow[0] * page:overflow[0] * page + 4] = (0x7FFFFFF0).to_bytes(4, "big")
+    path.write_bytes(bytes(data))
+    with pytest.raises(RecordingError, match=r"truncated or corrupt ROS 2 sqlite3 bag after \d+ message\(s\)"):
+        load_buffer(path)
+    assert "malformed" in check_cli(path)
