@@ -98,3 +98,13 @@ def test_proven_layout_rejects_rows_whose_structure_differs():
     got, _ = decoded_values(decoder)
     assert {got[k][0][:2] for k in range(0, 20, 2)} == {("map", "odom")}
     assert {got[k][0][:2] for k in range(1, 20, 2)} == {("abc", "xyz")}
+
+
+def test_sample_times_refuses_absurd_spans():
+    from robotmodel.errors import RecordingError
+    from robotmodel.recording import MAX_STEPS, sample_times
+
+    assert list(sample_times(10, 40, 10)) == [10, 20, 30, 40]
+    assert len(sample_times(0, (MAX_STEPS - 1) * 7, 7)) == MAX_STEPS
+    with pytest.raises(RecordingError, match=r"run\.bag: the transforms span .* more than 100,000"):
+        sample_times(0, MAX_STEPS * 7, 7, where="run.bag")
