@@ -258,3 +258,37 @@ def test_quiet_spells_are_flushed_when_due(tmp_path):
         assert len(readable(path)) == seen
         w.close()
         assert len(readable(path)) == 1
+
+
+@pytest.mark.parametrize("words", [["bad topic"], ["--connect", "nonsense"], ["/tf", "--connect", "foo/127.0.0.1:7447"]])
+def test_record_that_cannot_start_leaves_no_file(tmp_path, words):
+    import subprocess
+    import sys
+
+    out = tmp_path / "never.mcap"
+    proc = subprocess.run([sys.executable, "-m", "robotmodel.cli.main", "record", "-o", str(out), *words],
+                          check=False, capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 1, proc.stderr
+    assert len(proc.stderr.splitlines()) == 1 and "Traceback" not in proc.stderr
+    assert not out.exists() and list(tmp_path.iterdir()) == []
+
+
+def test_writer_block_that_fails_leaves_no_file_and_never_overwrites(tmp_path):
+    from robotmodel.errors import RecordingError
+
+    path = tmp_path / "failed.mcap"
+    with pytest.raises(ValueError, match="start failed"), McapWriter(path):
+        assert path.exists()
+        raise ValueError("start failed")
+    assert not path.exists()
+    # Once a message is in, the file is the recording: kept (and finished) whatever ends the block.
+    data = bytes(TS2.serialize_cdr(TS2.types["std_msgs/msg/String"](data="robot"), "std_msgs/msg/String"))
+    with pytest.raises(ValueError, match="later"), McapWriter(path) as w:
+        w.add_topic("/robot_description", "std_msgs/msg/String")
+        w.write("/robot_description", 1, data)
+        raise ValueError("later")
+    assert len(readable(path)) == 1
+    before = path.read_bytes()
+    with pytest.raises(RecordingError, match="already exists"):
+        McapWriter(path)
+    assert path.read_bytes() == before
