@@ -90,6 +90,13 @@ def _close_all() -> None:
         backend.close()
 
 
+# At exit Python joins the non-daemon threads before it runs atexit handlers, and zenoh's
+# callback threads (non-daemon when declared from the main thread) end only once their session
+# closes: a script that ends without closing its node (an uncaught exception, Ctrl-C) waited
+# forever. threading's own exit hooks run before that join (concurrent.futures uses the same).
+threading._register_atexit(_close_all)  # type: ignore[attr-defined]
+
+
 class _Undeclare(Handle):
     def __init__(self, backend: ZenohBackend, obj: Any) -> None:
         self._backend = backend
