@@ -61,3 +61,35 @@ def test_script_ends_within_2_s(bus, holder, ending):
         assert proc.err[-1] == "RuntimeError: the script failed"
     if ending == "SIGINT":
         assert proc.err[-1] == "KeyboardInterrupt"
+
+
+_WORKER = """
+import threading, time
+from robotmodel.bus import Node
+from robotmodel.msgs import String
+node = Node("script")
+node.create_subscription(String, "/chatter", lambda m: None, 10)
+pub = node.create_publisher(String, "/chatter", 10)
+def work():
+    time.sleep(0.5)  # still working after the main thread has ended
+    pub.publish(String(data="late"))
+    print("published", flush=True)
+threading.Thread(target=work).start()
+print("ready", flush=True)
+"""
+
+
+def test_the_scripts_own_threads_finish_with_the_bus_open(bus):
+    """Closing the sessions at exit waits for the script's own threads, as Python's exit does."""
+    import sys
+
+    proc = bus.start(sys.executable, "-c", _WORKER)
+    proc.wait_line("^ready$", timeout=60)
+    try:
+        code = proc.popen.wait(_DEADLINE_S + 8)
+    except Exception:
+        proc.kill()
+        pytest.fail("the script did not end:\n" + "\n".join(proc.err[-20:]))
+    proc.kill()
+    assert code == 0, proc.err[-20:]
+    assert proc.out[-1] == "published" and not proc.err, proc.err
