@@ -56,14 +56,11 @@ def split_bag_words(words: Sequence[str]) -> tuple[list[str], dict[str, str | bo
     return rest, found
 
 
-def parse_seconds_ns(text: str, what: str) -> int:
-    """Seconds as text (``12.5``, ``1700000000.123456789``) to integer ns, exactly."""
-    from decimal import Decimal, InvalidOperation
+def parse_seconds_ns(text: str, what: str, *, signed: bool = False) -> int:
+    """Seconds as text (``12.5``, ``1700000000.123456789``) to integer ns, exactly, within tf2's time range."""
+    from robotmodel.time import parse_seconds
 
     try:
-        value = Decimal(text)
-    except InvalidOperation:
-        raise BagWordsError(f"{what} must be a number of seconds, got '{text}'") from None
-    if not value.is_finite():
-        raise BagWordsError(f"{what} must be a finite number of seconds, got '{text}'")
-    return int(value * 1_000_000_000)
+        return parse_seconds(text, signed=signed)
+    except ValueError as exc:
+        raise BagWordsError(f"{what}: {exc}") from None

@@ -11,33 +11,36 @@ from __future__ import annotations
 
 import argparse
 import sys
+from collections.abc import Sequence
 
 from robotmodel.cli._bag_args import BagWordsError, load_bag, parse_seconds_ns
 from robotmodel.cli._echo_fmt import EchoArgs, failure_text, format_echo
+
+from robotmodel.recording import sample_times
 
 __all__ = ["run_bag_echo"]
 
 _NS = 1_000_000_000
 
 
-def _times(start: int, end: int, options: dict[str, str | bool], rate_hz: float) -> tuple[list[int], bool]:
+def _times(start: int, end: int, options: dict[str, str | bool], rate_hz: float) -> tuple[Sequence[int], bool]:
     if "time" in options and "every" in options:
         raise BagWordsError("give --time or --every, not both")
     text = options.get("time")
     if isinstance(text, str):
         if text.startswith("+"):
-            return [start + parse_seconds_ns(text[1:], "--time")], True
-        t = parse_seconds_ns(text, "--time")
-        if t < 0:
-            raise BagWordsError("--time cannot be negative")
-        return [t], True
+            t = start + parse_seconds_ns(text[1:], "--time", signed=True)
+            if t >= 2**63:
+                raise BagWordsError(f"--time {text}: beyond tf2's time range from the first transform")
+            return [t], True
+        return [parse_seconds_ns(text, "--time")], True
     every = options.get("every")
     step = parse_seconds_ns(every, "--every") if isinstance(every, str) else round(_NS / rate_hz)
     if step <= 0:
         raise BagWordsError("--every must be greater than 0")
     if end == 0:  # static transforms only: one answer, valid at any time
         return [0], False
-    return list(range(start, end + 1, step)), False
+    return sample_times(start, end, step, where=str(options["bag"])), False
 
 
 def run_bag_echo(echo: EchoArgs, options: dict[str, str | bool]) -> int:

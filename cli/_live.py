@@ -135,6 +135,20 @@ def _matrix(t: Any) -> Any:
     return m
 
 
+def _page_line(url: str, node_name: str | None, *, publish: bool, follow: bool, tf: bool) -> str:
+    """The URL line; a page with a role says which page it is (launch starts two: the sliders and rviz's)."""
+    if publish:
+        role = "sliders publishing /joint_states"
+    elif follow:
+        role = "the robot following /joint_states" + (" and /tf" if tf else "")
+    elif tf:
+        role = "the robot with /tf"
+    else:
+        return url
+    who = node_name or ("joint_state_publisher_gui" if publish else "view")
+    return f"{url} ({who}: {role})"
+
+
 def serve_live(args: argparse.Namespace, desc: Any, initial: dict[str, float], frames: Any,
                *, publish: bool = False, jsp_options: dict[str, Any] | None = None) -> int:
     """Serve the viewer until SIGINT/SIGTERM; ``desc=None`` takes the robot from the bus.
@@ -193,7 +207,8 @@ def serve_live(args: argparse.Namespace, desc: Any, initial: dict[str, float], f
             buffer = Buffer()
             closers.insert(0, TransformListener(buffer, node))
             threading.Thread(target=_tf_loop, args=(buffer, viewer, args, stop), daemon=True).start()
-        print(viewer.url, flush=True)
+        print(_page_line(viewer.url, getattr(args, "node_name", None), publish=publish, follow=follow, tf=tf),
+              flush=True)
         if args.open:
             viewer.open()
         stop.wait()

@@ -30,7 +30,13 @@ def register(sub: Any) -> None:
                     "(rosbag2's ros2 profile, CDR) until Ctrl-C or SIGTERM.",
     )
     parser.add_argument("topics", nargs="*", metavar="TOPIC", help="topics to record")
-    parser.add_argument("-o", "--output", required=True, metavar="OUT.mcap", help="the MCAP file to write")
+    parser.add_argument("-a", "--all", action="store_true",
+                        help="record every topic, including those that appear later (hidden ones excepted), "
+                             "as ros2 bag / rosbag record -a")
+    output = parser.add_mutually_exclusive_group(required=True)
+    output.add_argument("-o", "--output", metavar="OUT.mcap", help="the MCAP file to write")
+    output.add_argument("-O", "--output-name", dest="output_name", metavar="NAME",
+                        help="rosbag record's form: write NAME, with .mcap added unless it ends so")
     parser.add_argument("--flush-interval", type=float, default=1.0, metavar="SECONDS",
                         help="finish a chunk and flush it to disk this often (default 1.0)")
     parser.add_argument("--connect", action="append", default=[], metavar="ENDPOINT",
@@ -40,7 +46,8 @@ def register(sub: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Subscribe, write until a stop signal, then close the file properly."""
-    out = Path(args.output)
+    name = args.output_name
+    out = Path(args.output if name is None else name if name.endswith(".mcap") else f"{name}.mcap")
     if out.exists():
         print(f"robotmodel record: error: {out} already exists (not overwritten)", file=sys.stderr)
         return 1
@@ -51,9 +58,9 @@ def run(args: argparse.Namespace) -> int:
     from robotmodel.bus import Node
     from robotmodel.recording import McapWriter, Recorder
 
-    topics = args.topics or list(_DEFAULT_TOPICS)
+    topics = args.topics or ([] if args.all else list(_DEFAULT_TOPICS))
     with McapWriter(out, flush_every_s=args.flush_interval) as writer, Node(_NODE, connect=args.connect) as node:
-        recorder = Recorder(node, writer, topics,
+        recorder = Recorder(node, writer, topics, all_topics=args.all,
                             on_subscribed=lambda t, _ty: ros_log("INFO", _NODE, f"Subscribed to topic '{t}'"))
         ros_log("INFO", _NODE, f"Recording to '{out}'...")
         try:

@@ -57,7 +57,7 @@ From a recording instead of the bus (ROS 1 .bag, ROS 2 bag folder, .db3 or .mcap
 def register(sub: Any) -> None:
     """Add the ``tf2-echo`` subcommand (it parses its own words, as ROS's does)."""
     parser: argparse.ArgumentParser = sub.add_parser(
-        "tf2-echo", aliases=["tf2_echo"], prefix_chars="\x01", add_help=False,
+        "tf2-echo", aliases=["tf2_echo", "tf_echo"], prefix_chars="\x01", add_help=False,
         help="print a transform from the bus (or a recording: --bag FILE) in tf2_echo's format",
         description="tf2-echo SOURCE TARGET [RATE] [--connect ENDPOINT] [--namespace NS] [--ros-args -r /tf:=TOPIC] | "
                     "tf2-echo --bag FILE SOURCE TARGET [--time T | --every DT] [--urdf FILE]",

@@ -17,6 +17,17 @@ from robotmodel.cli._ros_args import add_node_arguments
 from robotmodel.errors import RobotModelError
 
 
+def _port(text: str) -> int:
+    """``--port``'s type: a TCP port, 0 to 65535 (argparse prints the error and exits 2)."""
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"invalid port: '{text}'") from None
+    if not 0 <= value <= 65535:
+        raise argparse.ArgumentTypeError(f"port {value} is out of range: a TCP port is 0 to 65535")
+    return value
+
+
 def add_viewer_arguments(parser: argparse.ArgumentParser, *, live_flags: bool = True) -> None:
     """The arguments ``view`` and ``joint-state-publisher-gui`` share."""
     add_mapping_arguments(parser)
@@ -26,7 +37,7 @@ def add_viewer_arguments(parser: argparse.ArgumentParser, *, live_flags: bool = 
                         help="search DIR first for ROS packages ($(find pkg), package://); repeatable")
     parser.add_argument("--untrusted", action="store_true",
                         help="refuse $(env), $(optenv) and reads outside the input's package roots")
-    parser.add_argument("--port", type=int, default=None,
+    parser.add_argument("--port", type=_port, default=None,
                         help="serve on this port of 127.0.0.1 (default: 7000, or the next free one)")
     parser.add_argument("--open", action="store_true", help="open the page in the default web browser")
     parser.add_argument("--collisions", action="store_true", help="show collision geometry too")

@@ -101,7 +101,8 @@ class PackageNotFoundError(ResourceError):
         self.package = package
         self.searched = searched
         where = ", ".join(searched) if searched else "nowhere (no search roots)"
-        super().__init__(f"package '{package}' not found; searched: {where}")
+        super().__init__(f"package '{package}' not found; searched: {where}. Name the folder holding it with "
+                         "--package-path DIR (package_paths=[DIR] in Python) or ROS_PACKAGE_PATH")
 
 
 class RevisionError(ResourceError):

@@ -111,6 +111,27 @@ def _close_all() -> None:
         backend.close()
 
 
+def _close_at_thread_shutdown() -> None:
+    # At exit Python joins the non-daemon threads before it runs atexit handlers, and zenoh's
+    # callback threads (non-daemon when declared from the main thread) end only once their
+    # session closes: a script that ended without closing its node (an uncaught exception,
+    # Ctrl-C) waited forever. This runs first (threading's own exit hook, as concurrent.futures
+    # uses): the script's own threads finish with the bus still open, then the sessions close.
+    try:
+        while True:
+            others = [t for t in threading.enumerate() if not t.daemon and t is not threading.current_thread()
+                      and not t.name.endswith(_CALLBACK_THREAD)]
+            if not others:
+                break
+            for thread in others:
+                thread.join()
+    finally:
+        _close_all()
+
+
+threading._register_atexit(_close_at_thread_shutdown)  # type: ignore[attr-defined]
+
+
 class _Undeclare(Handle):
     def __init__(self, backend: ZenohSession, obj: Any) -> None:
         self._backend = backend

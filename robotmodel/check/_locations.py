@@ -99,6 +99,8 @@ class SourceIndex:
         self._add(entry)
 
     def _add(self, path: str) -> None:
+        if not Path(path).is_file():
+            return  # a pipe (a shell's <(...)) can be read once, and that read is the load's
         try:
             text = Path(path).read_text(encoding="utf-8", errors="replace")
         except OSError:

@@ -137,11 +137,11 @@ def is_macro_only(path: str | os.PathLike[str]) -> bool:
 
     Top-level ``<link>`` elements, macro calls and conditionals make a document a robot;
     ``xacro:macro``, ``xacro:property``, ``xacro:arg``, ``xacro:include`` and other URDF
-    elements (materials, gazebo tags) do not. ``.urdf`` files and files that do not parse
+    elements (materials, gazebo tags) do not. ``.urdf`` files, pipes and files that do not parse
     are never fragments: they are checked (and their errors reported) as they are.
     """
-    if os.fspath(path).endswith(".urdf"):
-        return False
+    if os.fspath(path).endswith(".urdf") or not Path(path).is_file():
+        return False  # a pipe (a shell's <(...)) is never a fragment, and reading it here would empty it
     try:
         root = ET.parse(path).getroot()
     except (ET.ParseError, OSError):

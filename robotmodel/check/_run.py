@@ -125,9 +125,10 @@ def check_file(job: CheckJob) -> FileReport:
 
 
 def _has_includes(path: str) -> bool:
-    # Only a document that includes others needs xacro's --deps to find its sources.
+    # Only a document that includes others needs xacro's --deps to find its sources. A pipe
+    # (a shell's <(...)) is not read here: it can be read once, by the load.
     try:
-        return b"xacro:include" in Path(path).read_bytes()
+        return Path(path).is_file() and b"xacro:include" in Path(path).read_bytes()
     except OSError:
         return False
 

@@ -7,6 +7,8 @@
   size) and Jacobians (Pinocchio, while its Data stays under :data:`PINOCCHIO_DATA_LIMIT`).
 - :func:`joint_transforms` / :func:`static_transforms`: per-joint T_parent_child as RSP publishes.
 - :func:`batch_link_matrices`: N configurations at once, vectorized.
+- :func:`to_yourdfpy` / :func:`trimesh_scene`: the robot posed at a configuration as a
+  ``yourdfpy.URDF`` or a ``trimesh.Scene``, for code written for those libraries.
 """
 
 from __future__ import annotations
@@ -21,6 +23,7 @@ from robotmodel.kinematics._publish import (
     static_transforms,
 )
 from robotmodel.kinematics._state import KinematicState
+from robotmodel.kinematics._yourdfpy import to_yourdfpy, trimesh_scene
 
 __all__ = [
     "PINOCCHIO_DATA_LIMIT",
@@ -33,4 +36,6 @@ __all__ = [
     "batch_link_poses",
     "joint_transforms",
     "static_transforms",
+    "to_yourdfpy",
+    "trimesh_scene",
 ]

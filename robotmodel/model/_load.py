@@ -20,7 +20,7 @@ import re
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 
-from robotmodel.errors import URDFError
+from robotmodel.errors import URDFError, URDFParseError
 from robotmodel.model._parse import parse_located, parse_urdf
 from robotmodel.model._robot import RobotDescription
 
@@ -71,15 +71,25 @@ def load(
         text = expand_string(source, args, package_paths=package_paths, untrusted=untrusted)
         return parse_urdf(text)
     path = Path(source)
-    if not path.is_file():
-        what = "is a directory, not a URDF file" if path.is_dir() else "no such file"
-        raise URDFError(f"{path}: {what}")
+    if path.is_dir():
+        raise URDFError(f"{path}: is a directory, not a URDF file")
+    if not path.exists():
+        raise URDFError(f"{path}: no such file")
     try:
+        # Not only regular files: /dev/null, /dev/stdin and a shell's <(...) pipe are read too.
         data = path.read_bytes()
     except OSError as exc:
         raise URDFError(f"{path}: cannot read: {exc.strerror}") from None
+    if not data.strip(b"\xef\xbb\xbf \t\r\n"):
+        # urdfdom's check_urdf: "Error=XML_ERROR_EMPTY_DOCUMENT", then "Model Parsing the xml failed".
+        raise URDFParseError(f"{path}: empty file: no XML document (XML_ERROR_EMPTY_DOCUMENT)")
     if not is_xacro(_markers(data), path.name):
         return parse_urdf(data, source=str(path))
+    if not path.is_file():  # a pipe cannot be read twice: expand the text read
+        from robotmodel.xacro import expand_string
+
+        return parse_urdf(expand_string(data.decode("utf-8", errors="replace"), args, package_paths=package_paths,
+                                        untrusted=untrusted, name=str(path)), source=str(path))
     from robotmodel.xacro import expand
 
     text = expand(path, args, package_paths=package_paths, untrusted=untrusted)

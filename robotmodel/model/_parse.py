@@ -287,6 +287,8 @@ def _decode(data: bytes, label: str) -> str:
 def parse_located(text: str, *, source: str | None, original: str) -> RobotDescription:
     """:func:`parse_urdf`, with error lines looked up in ``original`` (the pre-xacro text)."""
     label = source or "<string>"
+    if not text.strip("\ufeff \t\r\n"):
+        raise URDFParseError(f"{label}: malformed XML: empty document (XML_ERROR_EMPTY_DOCUMENT)")
     try:
         robot = ET.fromstring(text)
     except ET.ParseError as exc:

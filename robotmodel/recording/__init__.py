@@ -4,7 +4,8 @@
   /joint_states through the kinematics) in an unbounded :class:`robotmodel.tf.Buffer`,
   streamed and inserted in bulk.
 - :class:`Recording`: any supported file opened with rosbags, its topics and raw messages.
-- :func:`pose_series` and :func:`write_poses`: a frame pair's poses over time, to CSV or Parquet.
+- :func:`pose_series` and :func:`write_poses`: a frame pair's poses over time, to CSV or Parquet;
+  :func:`sample_times`: evenly spaced instants over a span, refused when absurdly many.
 - :class:`McapWriter` and :class:`Recorder`: MCAP files in rosbag2's ros2 profile (CDR),
   written from the bus, crash-tolerant chunk by chunk.
 
@@ -14,7 +15,15 @@ here, not the other way round.
 
 from __future__ import annotations
 
-from robotmodel.recording._export import COLUMNS, PoseSeries, pose_series, write_poses
+from robotmodel.recording._export import (
+    COLUMNS,
+    MAX_ROWS,
+    MAX_STEPS,
+    PoseSeries,
+    pose_series,
+    sample_times,
+    write_poses,
+)
 from robotmodel.recording._load import DEFAULT_TOPICS, Loaded, load_buffer, load_recording
 from robotmodel.recording._mcap import McapWriter, qos_yaml
 from robotmodel.recording._open import Format, Recording, Topic, detect_format, ros1_typestore
@@ -24,6 +33,8 @@ __all__ = [
     "COLUMNS",
     "DEFAULT_TOPICS",
     "KNOWN_TOPICS",
+    "MAX_ROWS",
+    "MAX_STEPS",
     "Format",
     "Loaded",
     "McapWriter",
@@ -37,5 +48,6 @@ __all__ = [
     "pose_series",
     "qos_yaml",
     "ros1_typestore",
+    "sample_times",
     "write_poses",
 ]

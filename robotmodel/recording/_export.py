@@ -23,9 +23,13 @@ from robotmodel.errors import RecordingError, TransformException
 if TYPE_CHECKING:
     from robotmodel.tf import Buffer
 
-__all__ = ["COLUMNS", "PoseSeries", "pose_series", "write_poses"]
+__all__ = ["COLUMNS", "MAX_ROWS", "MAX_STEPS", "PoseSeries", "pose_series", "sample_times", "write_poses"]
 
 COLUMNS = ("stamp_ns", "time_s", "x", "y", "z", "qx", "qy", "qz", "qw")
+#: Most instants :func:`sample_times` gives by default (tf2-echo --every prints a block for each).
+MAX_STEPS = 100_000
+#: Most rows :func:`pose_series` samples at a rate (7 doubles and a stamp each: 640 MB).
+MAX_ROWS = 10_000_000
 
 
 class PoseSeries(NamedTuple):
@@ -60,11 +64,32 @@ def _recorded_stamps(buffer: Buffer, frames: list[str]) -> list[npt.NDArray[np.i
     return out
 
 
+def sample_times(start_ns: int, end_ns: int, step_ns: int, *, limit: int = MAX_STEPS, where: str = "") -> range:
+    """``start_ns``, ``start_ns + step_ns``, ... up to ``end_ns`` (included), as a range.
+
+    Raises :class:`RecordingError` when that is more than ``limit`` instants: over a span
+    that long a damaged stamp (one flipped bit in the seconds moves it days away) is far
+    likelier than the wish, and the answer would be millions of lookups. ``where`` (a
+    file name) starts the message.
+    """
+    if step_ns <= 0:
+        raise ValueError(f"the step must be positive, got {step_ns} ns")
+    count = (end_ns - start_ns) // step_ns + 1 if end_ns >= start_ns else 0
+    if count > limit:
+        prefix = f"{where}: " if where else ""
+        raise RecordingError(
+            f"{prefix}the transforms span {(end_ns - start_ns) / 1e9:.9g} s (t={start_ns / 1e9:.9f} to "
+            f"t={end_ns / 1e9:.9f}): every {step_ns / 1e9:.9g} s is {count:,} instants, more than {limit:,} "
+            "(is a stamp damaged? ask for fewer: a longer step, or one time)")
+    return range(start_ns, end_ns + 1, step_ns)
+
+
 def pose_series(buffer: Buffer, parent: str, child: str, rate_hz: float | None = None) -> PoseSeries:
     """The pose of ``child`` in ``parent`` at the recorded stamps (or every 1/``rate_hz`` s).
 
     Raises :class:`~robotmodel.errors.TransformException` (tf2's text) when the frames
-    are unknown or never connected.
+    are unknown or never connected, and :class:`RecordingError` when a rate would sample
+    more than :data:`MAX_ROWS` rows (see :func:`sample_times`).
     """
     chain = sorted(set(_chain(buffer, parent)) ^ set(_chain(buffer, child)))
     stamps_per_frame = _recorded_stamps(buffer, chain)
@@ -78,8 +103,8 @@ def pose_series(buffer: Buffer, parent: str, child: str, rate_hz: float | None =
         merged = np.unique(np.concatenate(stamps_per_frame))
         stamps = merged[(merged >= start) & (merged <= end)]
     else:
-        step = max(round(1e9 / rate_hz), 1)
-        stamps = np.arange(start, end + 1, step, dtype=np.int64) if end >= start else np.zeros(0, np.int64)
+        times = sample_times(start, end, max(round(1e9 / rate_hz), 1), limit=MAX_ROWS)
+        stamps = np.arange(times.start, times.stop, times.step, dtype=np.int64)
     return _lookup_all(buffer, parent, child, stamps)
 
 

@@ -8,7 +8,10 @@ increasing stamps and equal parent, in stamp order with the file order breaking 
 the buffer ends as after one tf2 insert per transform in file order. A /tf_static
 message first flushes what is queued, so static/dynamic switches of a frame keep tf2's
 order. Rows tf2 would reject (NaN/inf, a zero quaternion, bad frame ids) are skipped and
-counted, with one warning for the whole file rather than one per transform.
+counted, with one warning for the whole file rather than one per transform. A message
+that does not decode as its recorded type is skipped and counted the same way (the live
+listener drops one with a warning too): the file is intact around it, so "truncated or
+corrupt" stays for damage to the file itself.
 """
 
 from __future__ import annotations
@@ -60,6 +63,7 @@ class Loaded:
     end_ns: int
     robot_description: str | None  # the last recorded /robot_description
     from_joint_states: bool  # TF computed from /joint_states through the kinematics
+    undecodable: int = 0  # messages skipped because they do not decode as their recorded type
 
 
 class _Loader:
@@ -72,6 +76,8 @@ class _Loader:
         self.decoder = TFArrayDecoder(rec.ros1, reference)
         self.accepted = 0
         self.skipped = 0
+        self.undecodable = 0  # static, joint state and description messages that did not decode
+        self.first_error: tuple[int, str, str] | None = None  # (order, topic, reason) of the first
         self.newest: dict[str, int] = {}
         self.held: dict[str, list[_Piece]] = {}
         self.start_ns = 2**63
@@ -129,10 +135,31 @@ class _Loader:
             self.skipped += hi - lo - got
         self.newest[child.lstrip("/")] = max(self.newest.get(child.lstrip("/"), -1), int(stamps[-1]))
 
+    def undecoded(self, order: int, topic: str, exc: MessageError) -> None:
+        """Count one message left out because it does not decode."""
+        self.undecodable += 1
+        if self.first_error is None:
+            self.first_error = (order, topic, str(exc))
+
+    def undecodable_report(self, dynamic_topic: str) -> str:
+        """One line: how many messages did not decode, and why the first did not."""
+        total = self.undecodable + self.decoder.undecodable
+        firsts = [e for e in (self.first_error,) if e is not None]
+        if self.decoder.first_error is not None:
+            firsts.append((self.decoder.first_error[0], dynamic_topic, self.decoder.first_error[1]))
+        _, topic, reason = min(firsts)
+        return (f"{self.rec.path}: skipped {total} message(s) that do not decode as their recorded type "
+                f"(first on {topic}: {' '.join(reason.split())[:200]})")
+
     # --------------------------------------------------------------- static
-    def static(self, data: bytes) -> None:
+    def static(self, order: int, topic: str, data: bytes) -> None:
         self.commit()  # a frame switching between static and dynamic keeps tf2's order
-        for parent, child, stamp_ns, pose in self.reference(data):
+        try:
+            records = self.reference(data)
+        except MessageError as exc:
+            self.undecoded(order, topic, exc)
+            return
+        for parent, child, stamp_ns, pose in records:
             if not all(v - v == 0.0 for v in pose) or not any(pose[3:]) or stamp_ns < 0:
                 self.skipped += 1
                 continue
@@ -201,7 +228,9 @@ def load_recording(
     (a description, URDF/xacro path or text) or else the recorded /robot_description.
     ``progress``: a bar on stderr for reads over a second (None: when stderr is a
     terminal). Raises :class:`RecordingError` (one line: the file and what was read) for
-    a file that is not a readable recording or a topic of an unexpected type.
+    a file that is not a readable recording or a topic of an unexpected type. A message
+    that does not decode as its type is skipped and counted (``Loaded.undecodable``, one
+    warning for the file), as transforms tf2 would reject are.
     """
     from robotmodel.tf import Buffer
 
@@ -230,7 +259,7 @@ def load_recording(
         description: str | None = None
         bar = Progress(str(rec.path), sum(t.count for t in rec.topics() if t.name in roles), progress)
         n = 0
-        damaged: tuple[type[BaseException], ...] = (MessageError, *reader_errors())
+        dynamic_topic = next((t for t, r in roles.items() if r == "tf"), "/tf")
         try:
             for n, (topic, _t_ns, data) in enumerate(rec.messages([t for t in wanted if t in roles]), 1):
                 role = roles[topic]
@@ -240,19 +269,27 @@ def load_recording(
                         loader.flush()
                         bar.update(n)
                 elif role == "static":
-                    loader.static(data)
-                elif role == "joints":
-                    if use_joints:
-                        joints.add(rec.deserialize(data, JOINT_STATE_TYPE))
+                    loader.static(n, topic, data)
+                elif role == "joints" and not use_joints:
+                    continue
                 else:
-                    description = str(rec.deserialize(data, STRING_TYPE).data)
+                    try:
+                        if role == "joints":
+                            joints.add(rec.deserialize(data, JOINT_STATE_TYPE))
+                        else:
+                            description = str(rec.deserialize(data, STRING_TYPE).data)
+                    except MessageError as exc:
+                        loader.undecoded(n, topic, exc)
             loader.commit()
         except RecordingError:
             raise
-        except damaged as exc:
+        except reader_errors() as exc:
             raise rec.damaged(exc) from None
         finally:
             bar.close()
+        undecodable = loader.undecodable + loader.decoder.undecodable
+        if undecodable:
+            _log.warning("%s", loader.undecodable_report(dynamic_topic))
         accepted, skipped = loader.accepted, loader.skipped
         start, end = (loader.start_ns, loader.end_ns) if loader.end_ns else (0, 0)
         if use_joints and len(joints):
@@ -266,7 +303,8 @@ def load_recording(
         if skipped:
             _log.warning("%s: skipped %d transform(s) tf2 would reject (non-finite values, zero quaternions or bad "
                          "frame ids)", rec.path, skipped)
-        return Loaded(buf, rec.path, n, accepted, skipped, start, end, description, use_joints and len(joints) > 0)
+        return Loaded(buf, rec.path, n, accepted, skipped, start, end, description, use_joints and len(joints) > 0,
+                      undecodable)
 
 
 def load_buffer(path: str | os.PathLike[str], topics: Collection[str] | None = None, **options: Any) -> Buffer:

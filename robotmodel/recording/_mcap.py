@@ -41,7 +41,11 @@ class McapWriter:
     """An MCAP file being written: ``add_topic`` each topic, then ``write`` raw CDR messages.
 
     Thread-safe (bus callbacks arrive on transport threads). ``close`` writes the summary;
-    a writer that is never closed still leaves every flushed chunk readable.
+    a writer that is never closed still leaves every flushed chunk readable. The file is
+    created new (an existing file is a :class:`RecordingError`, never overwritten). Used as
+    a context manager, a block that fails (an ``Exception``) before any message was
+    written leaves no file behind (:meth:`discard`): a recording that could not start is
+    no recording.
     """
 
     def __init__(self, path: str | os.PathLike[str], *, flush_every_s: float = _DEFAULT_FLUSH_S,
@@ -50,7 +54,9 @@ class McapWriter:
 
         self.path = Path(path)
         try:
-            self._file: IO[bytes] = self.path.open("wb")
+            self._file: IO[bytes] = self.path.open("xb")
+        except FileExistsError:
+            raise RecordingError(f"{self.path}: already exists (not overwritten)") from None
         except OSError as exc:
             raise RecordingError(f"{self.path}: cannot write: {exc.strerror or exc}") from None
         self._writer: Any = Writer(self._file, chunk_size=chunk_size, compression=CompressionType.ZSTD)
@@ -68,8 +74,12 @@ class McapWriter:
     def __enter__(self) -> McapWriter:
         return self
 
-    def __exit__(self, *exc: object) -> None:
-        self.close()
+    def __exit__(self, exc_type: type[BaseException] | None, exc: BaseException | None, tb: object) -> None:
+        # Ctrl-C (KeyboardInterrupt) ends a recording as a stop does: the file is kept.
+        if exc_type is not None and issubclass(exc_type, Exception) and self.messages == 0:
+            self.discard()
+        else:
+            self.close()
 
     def add_topic(self, topic: str, msgtype: str, qos_profiles: str | None = None) -> None:
         """Declare ``topic`` of ROS 2 type ``msgtype`` (e.g. ``tf2_msgs/msg/TFMessage``); idempotent.
@@ -143,6 +153,13 @@ class McapWriter:
                 self._writer.finish()
             finally:
                 self._file.close()
+
+    def discard(self) -> None:
+        """Close and delete the file (a recording that failed before it held anything); idempotent."""
+        with self._lock:
+            self.closed = True
+            self._file.close()
+            self.path.unlink(missing_ok=True)
 
     @property
     def topics(self) -> dict[str, Any]:

@@ -18,7 +18,7 @@ from functools import lru_cache
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from robotmodel.errors import RecordingError
+from robotmodel.errors import MessageError, RecordingError
 
 if TYPE_CHECKING:
     from rosbags.typesys.store import Typestore
@@ -84,7 +84,7 @@ def ros1_typestore() -> Typestore:
 
 @lru_cache(maxsize=1)
 def reader_errors() -> tuple[type[BaseException], ...]:
-    """What rosbags, mcap, sqlite3 and the decompressors raise for damaged input."""
+    """What rosbags, mcap, sqlite3/apsw and the decompressors raise for damaged input."""
     from rosbags.rosbag1 import ReaderError as Ros1Error
     from rosbags.rosbag2 import ReaderError as Ros2Error
     from rosbags.serde import SerdeError
@@ -93,11 +93,12 @@ def reader_errors() -> tuple[type[BaseException], ...]:
     found: list[type[BaseException]] = [Ros1Error, Ros2Error, SerdeError, OSError, EOFError, ValueError, KeyError,
                                         IndexError, struct.error, AssertionError, TypeError, AttributeError,
                                         RuntimeError, MemoryError]
-    for module in ("backports.zstd", "zstandard", "sqlite3"):
+    # rosbags reads .db3 files through apsw (SQLite's own binding), not only sqlite3.
+    for module, name in (("backports.zstd", "ZstdError"), ("zstandard", "ZstdError"), ("sqlite3", "Error"),
+                         ("apsw", "Error")):
         try:
-            found.append(importlib.import_module(module).Error if module == "sqlite3"
-                         else importlib.import_module(module).ZstdError)
-        except ImportError:
+            found.append(getattr(importlib.import_module(module), name))
+        except (ImportError, AttributeError):
             continue
     try:
         from mcap.exceptions import McapError
@@ -227,9 +228,16 @@ class Recording:
                               f"message(s){where}: {_reason(exc)}")
 
     def deserialize(self, data: bytes, msgtype: str) -> Any:
-        """A rosbags message object of ``msgtype`` from this recording's serialization."""
-        if self.ros1:
-            return ros1_typestore().deserialize_ros1(data, msgtype)
-        from robotmodel.msgs import typestore
+        """A rosbags message object of ``msgtype`` from this recording's serialization.
 
-        return typestore().deserialize_cdr(data, msgtype)
+        Raises :class:`MessageError` for bytes that do not decode as ``msgtype``: the
+        message is bad, not the file.
+        """
+        try:
+            if self.ros1:
+                return ros1_typestore().deserialize_ros1(data, msgtype)
+            from robotmodel.msgs import typestore
+
+            return typestore().deserialize_cdr(data, msgtype)
+        except reader_errors() as exc:
+            raise MessageError(f"cannot decode {len(data)} bytes as {msgtype}: {_reason(exc)}") from None

@@ -3,8 +3,11 @@
 The usual topics have known types and are subscribed at once, latched ones
 (/tf_static, /robot_description) with transient-local QoS so that data published before
 the recorder started is recorded too. Any other topic is subscribed as soon as the bus's
-graph names its type. Messages are written undecoded; the log time is the receive time
-and the publish time the sender's source timestamp, as rosbag2 records them.
+graph names its type. With ``all_topics`` (``ros2 bag record -a``, ``rosbag record -a``)
+every topic the graph shows, now or later, is recorded, hidden ones (a name part starting
+with ``_``) excepted, as ros2 bag does without ``--include-hidden-topics``. Messages are
+written undecoded; the log time is the receive time and the publish time the sender's
+source timestamp, as rosbag2 records them.
 """
 
 from __future__ import annotations
@@ -38,22 +41,27 @@ class Recorder:
     """Subscribes ``node`` to ``topics`` and writes what arrives to ``writer`` until :meth:`close`.
 
     ``on_subscribed(topic, msgtype)`` is called as each topic is subscribed (for logging).
+    ``all_topics``: also every topic the graph shows, as it appears (hidden ones excepted).
     """
 
     def __init__(self, node: Node, writer: McapWriter, topics: Sequence[str],
-                 on_subscribed: Callable[[str, str], None] | None = None) -> None:
+                 on_subscribed: Callable[[str, str], None] | None = None, *, all_topics: bool = False) -> None:
         self.node = node
         self.writer = writer
         self._on_subscribed = on_subscribed
-        self._pending = [node.resolve_topic_name(t) for t in dict.fromkeys(topics)]
+        self._all = all_topics
+        # All topics: the known ones at once too, so that latched data is asked for as latched.
+        wanted = [*topics, *(KNOWN_TOPICS if all_topics else ())]
+        self._pending = [node.resolve_topic_name(t) for t in dict.fromkeys(wanted)]
         self._subscribed: dict[str, str] = {}
+        self._refused: set[str] = set()
         self._stop = threading.Event()
         for topic in list(self._pending):
             known = KNOWN_TOPICS.get(topic)
             if known is not None:
                 self._subscribe(topic, *known)
         self._thread: threading.Thread | None = None
-        if self._pending:
+        if self._pending or all_topics:
             self._thread = threading.Thread(target=self._discover, name="record-discovery", daemon=True)
             self._thread.start()
 
@@ -79,8 +87,11 @@ class Recorder:
         self.writer.write(msg.topic, time.time_ns(), msg.payload, msg.info.source_timestamp_ns)
 
     def _discover(self) -> None:
-        while self._pending and not self._stop.wait(_DISCOVERY_PERIOD_S):
+        while (self._pending or self._all) and not self._stop.wait(_DISCOVERY_PERIOD_S):
             types = dict(self.node.get_topic_names_and_types())
+            if self._all:
+                self._pending.extend(t for t in types if t not in self._subscribed and t not in self._pending
+                                     and t not in self._refused and not _hidden(t))
             for topic in list(self._pending):
                 found: list[Any] = types.get(topic, [])
                 if not found:
@@ -90,9 +101,15 @@ class Recorder:
                 except RobotModelError as exc:  # a type rosbags does not know: say so, record the rest
                     _log.warning("not recording %s: %s", topic, exc)
                     self._pending.remove(topic)
+                    self._refused.add(topic)
 
     def close(self) -> None:
         """Stop recording (the writer stays open for its owner to close)."""
         self._stop.set()
         if self._thread is not None:
             self._thread.join(2.0)
+
+
+def _hidden(topic: str) -> bool:
+    """A hidden topic (rcl's rule: a name part starting with ``_``)."""
+    return any(part.startswith("_") for part in topic.split("/"))

@@ -9,7 +9,8 @@ length are then stacked into one ``(B, width)`` array of padded rows; those whos
 other byte (counts, string lengths, frame names, padding, encapsulation) equals the
 proven message's (compared as masked 64-bit words) have the same layout by construction,
 and their stamps and poses are read for all B at once (as whole int32/float64 words for
-CDR). Anything else goes through the reference decoder one by one.
+CDR). Anything else goes through the reference decoder one by one; a message it cannot
+decode is left out and counted (``undecodable``), as the live listener drops one.
 """
 
 from __future__ import annotations
@@ -123,6 +124,8 @@ class TFArrayDecoder:
         self._layouts: dict[int, list[_Layout]] = {}
         self._pending: dict[int, list[tuple[int, bytes]]] = {}
         self.pending_messages = 0
+        self.undecodable = 0  # messages the reference decoder refused (left out)
+        self.first_error: tuple[int, str] | None = None  # (order, reason) of the first of them
 
     def add(self, order: int, data: bytes) -> None:
         """Queue one message (``order``: its position in the stream)."""
@@ -132,7 +135,7 @@ class TFArrayDecoder:
     def flush(self) -> tuple[list[Block], list[tuple[int, list[TFRecord]]]]:
         """Decode everything queued: array blocks, and (order, records) of messages taken one by one.
 
-        Raises :class:`MessageError` for a message that does not decode as a TFMessage.
+        A message that does not decode as a TFMessage is left out and counted in ``undecodable``.
         """
         blocks: list[Block] = []
         slow: list[tuple[int, list[TFRecord]]] = []
@@ -146,7 +149,9 @@ class TFArrayDecoder:
                       slow: list[tuple[int, list[TFRecord]]]) -> None:
         if len(items) == 1 and length not in self._layouts:
             order, data = items[0]
-            slow.append((order, self._decode_one(data)))
+            one = self._decode_one(order, data)
+            if one is not None:
+                slow.append((order, one))
             return
         orders = np.fromiter((o for o, _ in items), dtype=np.int64, count=len(items))
         arr = _rows([d for _, d in items], length)
@@ -172,7 +177,10 @@ class TFArrayDecoder:
                 break
             first = int(left[0])
             data = items[first][1]
-            records = self._decode_one(data)
+            records = self._decode_one(int(orders[first]), data)
+            if records is None:
+                left = left[1:]
+                continue
             proven = self._prove(data, records) if tried < _MAX_LAYOUTS_PER_LENGTH else None
             tried += 1
             if proven is None or len(layouts) >= _MAX_LAYOUTS_PER_LENGTH:
@@ -181,8 +189,14 @@ class TFArrayDecoder:
             else:
                 layouts.append(proven)
 
-    def _decode_one(self, data: bytes) -> list[TFRecord]:
-        return self._reference(data)
+    def _decode_one(self, order: int, data: bytes) -> list[TFRecord] | None:
+        try:
+            return self._reference(data)
+        except MessageError as exc:
+            self.undecodable += 1
+            if self.first_error is None or order < self.first_error[0]:
+                self.first_error = (order, str(exc))
+            return None
 
     def _prove(self, data: bytes, records: list[TFRecord]) -> _Layout | None:
         """The layout of ``data``, kept only if it reads exactly the reference's values."""

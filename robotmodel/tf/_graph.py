@@ -7,6 +7,7 @@ from collections.abc import Iterable
 
 from robotmodel.errors import ConnectivityException, LookupException
 from robotmodel.tf._cache import CacheMiss, StaticCache, TimeCache, format_time
+from robotmodel.tf._names import yaml_key, yaml_quoted
 
 __all__ = ["MAX_GRAPH_DEPTH", "FrameGraph"]
 
@@ -80,7 +81,7 @@ class FrameGraph:
             return self._frames_as_string()
 
     def all_frames_as_yaml(self, current_time_ns: int = 0) -> str:
-        """tf2's allFramesAsYAML (the text view_frames parses)."""
+        """tf2's allFramesAsYAML (the text view_frames parses); YAML that reads back whatever the names hold."""
         with self._lock:
             if len(self._names) == 1:
                 return "[]"
@@ -92,8 +93,10 @@ class FrameGraph:
                 oldest = cache.oldest_stamp()
                 span = max(newest - oldest, 100_000)
                 rate = len(cache) * 1e9 / span
-                out.append(f"{self._names[fid]}: \n  parent: '{self._names[parent]}'\n"
-                           f"  broadcaster: '{self._authority.get(fid, 'no recorded authority')}'\n"
+                # Names are anyone's choice on the bus: quoted and escaped where tf2's bare
+                # text would not read back as the same string (control characters, quotes, 'true').
+                out.append(f"{yaml_key(self._names[fid])}: \n  parent: {yaml_quoted(self._names[parent])}\n"
+                           f"  broadcaster: {yaml_quoted(self._authority.get(fid, 'no recorded authority'))}\n"
                            f"  rate: {rate:.3f}\n  most_recent_transform: {format_time(newest)}\n"
                            f"  oldest_transform: {format_time(oldest)}\n")
                 if current_time_ns:

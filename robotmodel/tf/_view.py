@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING, Any
 import yaml
 
 from robotmodel.errors import RobotModelError
+from robotmodel.tf._names import dot_quoted
 
 if TYPE_CHECKING:
     from robotmodel.tf._core import BufferCore
@@ -20,14 +21,20 @@ __all__ = ["view_frames_gv", "write_view_frames"]
 
 
 def view_frames_gv(frames_yaml: str, recorded_at_ns: int) -> str:
-    """Graphviz text of tf2_tools' view_frames for ``all_frames_as_yaml()`` output."""
+    """Graphviz text of tf2_tools' view_frames for ``all_frames_as_yaml()`` output.
+
+    Names are escaped for dot (quotes, backslashes, unprintable characters), so any frame
+    name a publisher sends gives a graph that dot draws.
+    """
     data: Any = yaml.safe_load(frames_yaml) if frames_yaml.strip() else None
     if not data:
         return 'digraph G { "No tf data received" }'
+    data = {str(child): {**info, "parent": str(info["parent"])} for child, info in data.items()}
     lines = ["digraph G {\n"]
     for child, info in data.items():
         lines.append(
-            f'"{info["parent"]}" -> "{child}"[label=" Broadcaster: {info["broadcaster"]}\\n'
+            f'"{dot_quoted(info["parent"])}" -> "{dot_quoted(child)}"'
+            f'[label=" Broadcaster: {dot_quoted(str(info["broadcaster"]))}\\n'
             f'Average rate: {info["rate"]}\\nBuffer length: {info["buffer_length"]}\\n'
             f'Most recent transform: {info["most_recent_transform"]}\\n'
             f'Oldest transform: {info["oldest_transform"]}\\n"];\n'
@@ -40,7 +47,7 @@ def view_frames_gv(frames_yaml: str, recorded_at_ns: int) -> str:
     lines.append("edge [style=invis];\n")
     lines.append(' subgraph cluster_legend { style=bold; color=black; label ="view_frames Result";\n')
     lines.append(f'"Recorded at time: {seconds}"[ shape=plaintext ] ;\n')
-    lines.append(f'}}->"{roots[-1]}";\n}}')
+    lines.append(f'}}->"{dot_quoted(roots[-1])}";\n}}')
     return "".join(lines)
 
 

@@ -11,7 +11,7 @@ mutable stamp messages are in :mod:`robotmodel.msgs.builtin_interfaces`
 from __future__ import annotations
 
 from robotmodel.time._clock import Clock, PlaybackClock, Rate, SimClock, SystemClock
-from robotmodel.time._time import Duration, Time, to_nanoseconds
+from robotmodel.time._time import Duration, Time, parse_seconds, to_nanoseconds
 
 __all__ = [
     "Clock",
@@ -21,5 +21,6 @@ __all__ = [
     "SimClock",
     "SystemClock",
     "Time",
+    "parse_seconds",
     "to_nanoseconds",
 ]

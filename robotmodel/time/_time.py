@@ -11,11 +11,12 @@ from __future__ import annotations
 
 import math
 from datetime import datetime
+from decimal import Decimal, InvalidOperation
 from typing import Any, NoReturn, overload
 
 from robotmodel.msgs import builtin_interfaces
 
-__all__ = ["Duration", "Time", "to_nanoseconds"]
+__all__ = ["Duration", "Time", "parse_seconds", "to_nanoseconds"]
 
 _NS = 1_000_000_000
 _INT64_MAX = 2**63 - 1
@@ -258,3 +259,26 @@ def to_nanoseconds(value: Any) -> int:
     if hasattr(value, "sec") and hasattr(value, "nanosec"):
         return int(value.sec) * _NS + int(value.nanosec)
     raise TypeError(f"a time must have sec and nanosec, or nanoseconds; got {kind.__name__}")
+
+
+def parse_seconds(text: str, *, signed: bool = False) -> int:
+    """Seconds written in decimal (``12.5``, ``1700000000.123456789``, ``1e3``) as integer nanoseconds, exactly.
+
+    Truncated toward zero to whole nanoseconds, as rclpy's ``Time(seconds=...)``. Raises
+    ValueError for text that is not a finite number, and for a value outside a Time's
+    range [0, 2**63) ns (a Duration's [-2**63, 2**63) with ``signed=True``), so that the
+    result always fits tf2's int64 time.
+    """
+    try:
+        value = Decimal(text.strip())
+    except InvalidOperation:
+        raise ValueError(f"'{text}' is not a number of seconds") from None
+    if not value.is_finite():
+        raise ValueError(f"'{text}' is not a finite number of seconds")
+    lowest = -_INT64_MAX - 1 if signed else 0
+    # Compared as decimals first: int() of '1e300000000' seconds would take forever.
+    if not Decimal(lowest) / _NS <= value < Decimal(_INT64_MAX + 1) / _NS:
+        kind = "a duration" if signed else "a time"
+        raise ValueError(f"'{text}' seconds is out of range for {kind}: it must be within "
+                         f"[{Decimal(lowest) / _NS}, {Decimal(_INT64_MAX) / _NS}]")
+    return int(value * _NS)

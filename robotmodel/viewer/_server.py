@@ -18,6 +18,7 @@ import threading
 from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any
+from urllib.parse import urlsplit
 
 import tornado.httpserver
 import tornado.netutil
@@ -27,11 +28,18 @@ from tornado.ioloop import IOLoop
 
 from robotmodel.errors import ViewerError
 
-__all__ = ["ASSETS", "SceneStore", "ViewerServer", "meshcat_dist"]
+__all__ = ["ASSETS", "SceneStore", "ViewerServer", "check_port", "meshcat_dist"]
 
 log = logging.getLogger("robotmodel.viewer")
 ASSETS = Path(__file__).with_name("assets")
 HOST = "127.0.0.1"
+_LOOPBACK_NAMES = frozenset({"127.0.0.1", "localhost", "::1"})
+
+
+def check_port(port: int | None) -> None:
+    """:class:`ViewerError` for a port outside 0..65535 (the socket layer would wrap it around silently)."""
+    if port is not None and not 0 <= port <= 65535:
+        raise ViewerError(f"port {port} is out of range: a TCP port is 0 to 65535 (0: any free port)")
 
 
 def meshcat_dist() -> Path:
@@ -46,7 +54,22 @@ def _quiet(handler: tornado.web.RequestHandler) -> None:
     """Request logging off: a viewer's terminal is for its own messages."""
 
 
+def _own_host(host: str, port: int) -> bool:
+    """Whether a request's Host header names this server: a loopback name and its port."""
+    try:
+        parsed = urlsplit(f"http://{host}")
+        return parsed.hostname in _LOOPBACK_NAMES and parsed.port == port
+    except ValueError:
+        return False
+
+
 class _Asset(tornado.web.StaticFileHandler):
+    def parse_url_path(self, url_path: str) -> str:
+        # No file name holds a NUL; tornado would fail on it deep in os.path with a 500.
+        if "\x00" in url_path:
+            raise tornado.web.HTTPError(404)
+        return super().parse_url_path(url_path)
+
     def set_extra_headers(self, path: str) -> None:
         # Cached but revalidated (ETag): a restarted viewer loads meshcat's 850 kB script,
         # already compiled, from the browser's cache; an upgraded one is fetched again.
@@ -78,10 +101,25 @@ class _Socket(tornado.websocket.WebSocketHandler):
     def initialize(self, server: ViewerServer) -> None:
         self.server = server
 
+    def prepare(self) -> None:
+        # Checked here rather than only in check_origin: tornado (6.6) lets an Origin whose host
+        # matches the Host header, or a Sec-Fetch-Site of same-origin, through without asking,
+        # and a DNS-rebound name (evil.example resolving to 127.0.0.1) matches itself.
+        origin = self.request.headers.get("Origin")
+        if not _own_host(self.request.host, self.server.port) or (origin is not None
+                                                                   and not self.check_origin(origin)):
+            raise tornado.web.HTTPError(403)
+
     def check_origin(self, origin: str) -> bool:
-        # Only pages served by this server (any loopback spelling) may drive it.
-        host = origin.split("://", 1)[-1].split("/", 1)[0].rsplit(":", 1)[0]
-        return host in ("127.0.0.1", "localhost", "[::1]")
+        # Only this server's own page may drive it: http, a loopback name, this port, and the
+        # origin the request was addressed to (no page on another loopback port gets in).
+        try:
+            parsed = urlsplit(origin)
+            port = parsed.port
+        except ValueError:
+            return False
+        return (parsed.scheme == "http" and parsed.hostname in _LOOPBACK_NAMES and port == self.server.port
+                and parsed.netloc.lower() == self.request.host.lower())
 
     def open(self, *args: str, **kwargs: str) -> None:
         self.set_nodelay(True)
@@ -91,7 +129,7 @@ class _Socket(tornado.websocket.WebSocketHandler):
     def on_message(self, message: str | bytes) -> None:
         try:
             data = json.loads(message)
-        except ValueError:
+        except (ValueError, RecursionError):  # not JSON, or nested past Python's recursion limit
             return
         if isinstance(data, dict):
             self.server._on_message(data, self)
@@ -130,6 +168,7 @@ class ViewerServer:
         self._loop: IOLoop | None = None
         self._http: tornado.httpserver.HTTPServer | None = None
         self.port = 0
+        check_port(port)
         self._thread = threading.Thread(target=self._run, args=(port,), name="robotmodel-viewer", daemon=True)
         self._thread.start()
         self._ready.wait()

@@ -19,7 +19,7 @@ from robotmodel.model import JointType, RobotDescription
 from robotmodel.viewer import _protocol as wire
 from robotmodel.viewer._camera import CAMERA, Camera, CameraControls, from_three, to_three
 from robotmodel.viewer._scene import ROOT, ProgressFn, build_scene, camera_position, frame_objects, origin_matrix
-from robotmodel.viewer._server import SceneStore, ViewerServer
+from robotmodel.viewer._server import SceneStore, ViewerServer, check_port
 from robotmodel.viewer._sliders import SliderJoint, slider_joints
 from robotmodel.viewer._static import static_page
 
@@ -38,7 +38,9 @@ class Viewer(CameraControls):
     """A robot shown in meshcat's three.js viewer, served from 127.0.0.1 with a joint slider panel.
 
     ``serve=False`` builds the scene without a server (for :meth:`static_html` only).
-    ``port=None`` tries 7000 and up; ``port=0`` takes any free port. Joint updates redraw
+    ``port=None`` tries 7000 and up; ``port=0`` takes any free port; a port outside 0..65535
+    is a :class:`ViewerError`. Only the page's own origin may open its websocket; slider
+    values a page sends are clamped to the sliders' ranges, as joint_state_publisher_gui's. Joint updates redraw
     at most ``max_rate`` times a second; updates in between coalesce to the latest.
     """
 
@@ -46,6 +48,8 @@ class Viewer(CameraControls):
                  package_paths: Iterable[str] = (), cache_dir: Path | None = None,
                  progress: ProgressFn | None = None, collisions: bool = False, frames: FramesSpec = None,
                  max_rate: float = 30.0) -> None:
+        if serve:
+            check_port(port)  # before the scene is built: a bad port should not cost a mesh load
         self.publishing = False
         self.following = False
         self._build_options: dict[str, Any] = {"package_paths": list(package_paths), "cache_dir": cache_dir,
@@ -231,11 +235,31 @@ class Viewer(CameraControls):
         """Call ``callback(all_positions)`` whenever a page's slider moves (on the server's thread)."""
         self._callbacks.append(callback)
 
+    def _slider_values(self, positions: dict[str, Any]) -> dict[str, float]:
+        """A page's slider values, each clamped to its slider's range as joint_state_publisher_gui's are.
+
+        Names without a slider (mimic or fixed-range joints, unknown names) and values that
+        are not finite numbers are dropped: a page is any client of the socket.
+        """
+        ranges = {s.name: (s.min, s.max) for s in self.sliders}
+        values = {}
+        for name, value in positions.items():
+            if name not in ranges or isinstance(value, bool) or not isinstance(value, int | float):
+                continue
+            try:
+                number = float(value)
+            except OverflowError:  # an integer past float's range: clamped like one past the limit
+                number = math.inf if value > 0 else -math.inf
+            if math.isnan(number):
+                continue
+            lo, hi = ranges[name]
+            values[name] = min(max(number, lo), hi)
+        return values
+
     def _on_page_message(self, message: dict[str, Any], sender: object = None) -> None:
         kind = message.get("type")
         if kind == "joints" and isinstance(message.get("positions"), dict):
-            values = {k: float(v) for k, v in message["positions"].items()
-                      if k in self.model.variables and isinstance(v, int | float) and math.isfinite(v)}
+            values = self._slider_values(message["positions"])
             token = message.get("token")
             self.display(values, token=token if isinstance(token, int) else None)
             if self._server is not None:

@@ -128,3 +128,44 @@ def test_graphviz_invalid_robot_writes_nothing(tmp_path: Path, monkeypatch: pyte
     assert main(["urdf-to-graphviz", str(bad)]) == 1
     assert "No link elements found" in capsys.readouterr().err
     assert list(out_dir.iterdir()) == []
+
+
+@pytest.mark.parametrize("kind", ["empty.urdf", "blank.urdf.xacro", "/dev/null", "pipe"])
+def test_empty_input_says_what_urdfdom_says(tmp_path: Path, kind: str) -> None:
+    """An empty document (a file, blanks only, /dev/null, a shell's <(...) pipe) is named as urdfdom names it."""
+    import os
+    import sys
+    import threading
+
+    if kind == "/dev/null":
+        path = Path(kind)
+    elif kind == "pipe":
+        path = tmp_path / "fifo"
+        os.mkfifo(path)
+        threading.Thread(target=lambda: path.open("wb").close(), daemon=True).start()  # the writer: nothing
+    else:
+        path = tmp_path / kind
+        path.write_text("" if kind.startswith("empty") else " \n\t\n")
+    proc = subprocess.run([sys.executable, "-m", "robotmodel.cli.main", "check_urdf", str(path)],
+                          capture_output=True, text=True, timeout=60, check=False)
+    assert proc.returncode == 1 and proc.stdout == ""
+    assert proc.stderr == (f"robotmodel check_urdf: error: {path}: empty file: no XML document "
+                           "(XML_ERROR_EMPTY_DOCUMENT)\n")
+    if kind != "pipe":  # urdfdom's own verdict on the same input
+        ref = subprocess.run([str(CHECK_URDF_BIN), str(path)], capture_output=True, text=True, env=urdfdom_env(),
+                             check=False)
+        assert ref.returncode != 0 and "XML_ERROR_EMPTY_DOCUMENT" in ref.stderr
+
+
+def test_a_pipe_holding_a_robot_is_checked(tmp_path: Path) -> None:
+    import os
+    import sys
+    import threading
+
+    path = tmp_path / "fifo"
+    os.mkfifo(path)
+    threading.Thread(target=lambda: path.write_bytes(PANDA.read_bytes()), daemon=True).start()
+    proc = subprocess.run([sys.executable, "-m", "robotmodel.cli.main", "check_urdf", str(path)],
+                          capture_output=True, text=True, timeout=60, check=False)
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout == _urdfdom_check(PANDA)

@@ -54,3 +54,18 @@ def test_view_frames_default_name_and_no_data(bus):
     gv = [n for n in names if n.endswith(".gv")]
     assert len(gv) == 1 and re.fullmatch(r"frames_\d{4}-\d\d-\d\d_\d\d\.\d\d\.\d\d\.gv", gv[0]), names
     assert (bus.cwd / gv[0]).read_text() == 'digraph G { "No tf data received" }'
+
+
+def test_view_frames_with_a_control_character_in_a_frame_name(bus):
+    """Any publisher picks the names: one holding a control character still gives .yaml, .gv and .pdf."""
+    static = bus.robotmodel("static-transform-publisher", "--frame-id", "world", "--child-frame-id", "cam\x07era")
+    static.wait_line(r"Spinning", stream="err")
+    view = bus.robotmodel("view-frames", "--wait-time", "2", "-o", "tree")
+    assert view.popen.wait(60) == 0, view.err
+    view.kill()
+    assert not any("Traceback" in line for line in view.err), view.err
+    frames = yaml.safe_load((bus.cwd / "tree.yaml").read_text())
+    assert frames["cam\x07era"]["parent"] == "world"
+    assert '"world" -> "cam\\\\x07era"' in (bus.cwd / "tree.gv").read_text()
+    assert (bus.cwd / "tree.pdf").read_bytes().startswith(b"%PDF")
+    assert static.stop(signal.SIGINT) == 0

@@ -165,7 +165,7 @@ def test_urdf_tutorial_display_launch_opens_sliders_viewer_and_tf(live, corpus, 
     pids = started(proc, 3)
     assert sorted(pids) == ["joint_state_publisher-1", "robot_state_publisher-2", "rviz-3"]
     # Both pages are served (the sliders and the rviz stand-in), each on its own port.
-    proc.wait_for(lambda: sum(bool(re.match(r"^http://127\.0\.0\.1:\d+/$", line)) for line in proc.out) >= 2,
+    proc.wait_for(lambda: sum(bool(re.match(r"^http://127\.0\.0\.1:\d+/( |$)", line)) for line in proc.out) >= 2,
                   60, "two page URLs")
     urls = {line for line in proc.out if line.startswith("http://")}
     assert len(urls) == 2

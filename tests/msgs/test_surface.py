@@ -22,7 +22,8 @@ from robotmodel.msgs import (
 
 def test_time_surface() -> None:
     assert robotmodel.time.__all__ == [
-        "Clock", "Duration", "PlaybackClock", "Rate", "SimClock", "SystemClock", "Time", "to_nanoseconds",
+        "Clock", "Duration", "PlaybackClock", "Rate", "SimClock", "SystemClock", "Time", "parse_seconds",
+        "to_nanoseconds",
     ]
     for name in robotmodel.time.__all__:
         assert getattr(robotmodel.time, name).__doc__, name

@@ -27,7 +27,8 @@ TYPES = {"tf": "tf2_msgs/msg/TFMessage", "js": "sensor_msgs/msg/JointState", "st
 
 @dataclass(frozen=True)
 class Msg:
-    """One message: ``kind`` tf (list of (parent, child, stamp_ns, pose7)), js ((stamp, names, positions)), str."""
+    """One message: ``kind`` tf (list of (parent, child, stamp_ns, pose7)), js ((stamp, names, positions)), str,
+    or raw (the serialized bytes as given, for messages that do not decode; name the topic's type in ``types``)."""
 
     topic: str
     log_ns: int
@@ -70,6 +71,15 @@ def build(ts: Any, m: Msg, ros1: bool) -> Any:
     return T["std_msgs/msg/String"](data=m.value)
 
 
+def serialized(ts: Any, m: Msg, msgtype: str, ros1: bool) -> bytes:
+    """The bytes written for ``m``: its value for raw messages, else the serialized message."""
+    if m.kind == "raw":
+        return bytes(m.value)
+    if ros1:
+        return bytes(ts.serialize_ros1(build(ts, m, True), msgtype))
+    return bytes(ts.serialize_cdr(build(ts, m, False), msgtype))
+
+
 def topics_of(msgs: Sequence[Msg]) -> dict[str, str]:
     return {m.topic: TYPES[m.kind] for m in msgs}
 
@@ -84,7 +94,7 @@ def write(path: Path, fmt: str, msgs: Sequence[Msg], types: dict[str, str] | Non
         with Writer1(out) as w:
             conns = {t: w.add_connection(t, ty, typestore=TS1) for t, ty in types.items()}
             for m in msgs:
-                w.write(conns[m.topic], m.log_ns, TS1.serialize_ros1(build(TS1, m, True), types[m.topic]))
+                w.write(conns[m.topic], m.log_ns, serialized(TS1, m, types[m.topic], True))
         return out
     if fmt in ("db3_folder", "mcap_folder", "db3"):
         from rosbags.rosbag2 import StoragePlugin, Writer
@@ -94,7 +104,7 @@ def write(path: Path, fmt: str, msgs: Sequence[Msg], types: dict[str, str] | Non
         with Writer(folder, version=9, storage_plugin=plugin) as w:
             conns = {t: w.add_connection(t, ty, typestore=TS2) for t, ty in types.items()}
             for m in msgs:
-                w.write(conns[m.topic], m.log_ns, bytes(TS2.serialize_cdr(build(TS2, m, False), types[m.topic])))
+                w.write(conns[m.topic], m.log_ns, serialized(TS2, m, types[m.topic], False))
         if fmt != "db3":
             return folder
         (db,) = folder.glob("*.db3")
@@ -120,7 +130,7 @@ def write_mcap(out: Path, msgs: Sequence[Msg], types: dict[str, str], chunk_size
                                     data=TS2.generate_msgdef(ty, ros_version=2)[0].encode())
             channels[topic] = w.register_channel(topic=topic, message_encoding="cdr", schema_id=sid)
         for m in msgs:
-            data = bytes(TS2.serialize_cdr(build(TS2, m, False), types[m.topic]))
+            data = serialized(TS2, m, types[m.topic], False)
             w.add_message(channels[m.topic], log_time=m.log_ns, publish_time=m.log_ns, data=data)
         w.finish()
     return out

@@ -14,7 +14,7 @@ import pytest
 from pytransform3d.rotations import matrix_from_quaternion
 from recording.bagfiles import FORMATS, NS, Msg, write
 
-from robotmodel.errors import ExtrapolationException, TransformException
+from robotmodel.errors import ExtrapolationException, RecordingError, TransformException
 from robotmodel.recording import Format, detect_format, load_buffer, load_recording
 from robotmodel.tf import Buffer
 
@@ -219,3 +219,14 @@ def test_ros1_tf_tfmessage_of_old_bags(tmp_path):
     buffer = load_buffer(path, progress=False)
     pose, _ = buffer.lookup_ns("odom", "base", stamp(2) + DT // 2)
     np.testing.assert_allclose(mat(pose), mat(slerp(base_pose(2), base_pose(3), 0.5)), atol=1e-12)
+
+
+def test_pose_series_at_a_rate_over_a_damaged_span_is_refused():
+    from robotmodel.recording import MAX_ROWS, pose_series
+
+    buf = Buffer(unbounded=True)
+    buf.insert("odom", "base", T0, (0, 0, 0, 0, 0, 0, 1), "test")
+    buf.insert("odom", "base", T0 + (1 << 19) * NS, (1, 0, 0, 0, 0, 0, 1), "test")  # a flipped seconds bit
+    assert len(pose_series(buf, "odom", "base", 1.0).stamps) == (1 << 19) + 1
+    with pytest.raises(RecordingError, match=f"more than {MAX_ROWS:,}"):
+        pose_series(buf, "odom", "base", 100.0)

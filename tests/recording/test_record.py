@@ -258,3 +258,89 @@ def test_quiet_spells_are_flushed_when_due(tmp_path):
         assert len(readable(path)) == seen
         w.close()
         assert len(readable(path)) == 1
+
+
+@pytest.mark.parametrize("words", [["bad topic"], ["--connect", "nonsense"], ["/tf", "--connect", "foo/127.0.0.1:7447"]])
+def test_record_that_cannot_start_leaves_no_file(tmp_path, words):
+    import subprocess
+    import sys
+
+    out = tmp_path / "never.mcap"
+    proc = subprocess.run([sys.executable, "-m", "robotmodel.cli.main", "record", "-o", str(out), *words],
+                          check=False, capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 1, proc.stderr
+    assert len(proc.stderr.splitlines()) == 1 and "Traceback" not in proc.stderr
+    assert not out.exists() and list(tmp_path.iterdir()) == []
+
+
+def test_writer_block_that_fails_leaves_no_file_and_never_overwrites(tmp_path):
+    from robotmodel.errors import RecordingError
+
+    path = tmp_path / "failed.mcap"
+    with pytest.raises(ValueError, match="start failed"), McapWriter(path):
+        assert path.exists()
+        raise ValueError("start failed")
+    assert not path.exists()
+    # Once a message is in, the file is the recording: kept (and finished) whatever ends the block.
+    data = bytes(TS2.serialize_cdr(TS2.types["std_msgs/msg/String"](data="robot"), "std_msgs/msg/String"))
+    with pytest.raises(ValueError, match="later"), McapWriter(path) as w:
+        w.add_topic("/robot_description", "std_msgs/msg/String")
+        w.write("/robot_description", 1, data)
+        raise ValueError("later")
+    assert len(readable(path)) == 1
+    before = path.read_bytes()
+    with pytest.raises(RecordingError, match="already exists"):
+        McapWriter(path)
+    assert path.read_bytes() == before
+
+
+def test_record_all_topics_with_rosbags_output_name(bus, tmp_path, monkeypatch):
+    """``record -a -O NAME`` (rosbag's and ros2 bag's flags): every topic, also ones appearing later;
+    hidden ones left out, as ros2 bag does without --include-hidden-topics."""
+    import threading
+    import time
+
+    from robotmodel.bus import Node
+    from robotmodel.msgs import String
+
+    for key in ("ROBOTMODEL_ZENOH_PORT", "ROS_DOMAIN_ID"):
+        monkeypatch.setenv(key, bus.env[key])
+    rec = bus.robotmodel("record", "-a", "-O", "everything", "--flush-interval", "0.2")
+    rec.wait_line(r"Recording to 'everything\.mcap'", stream="err", timeout=60)
+    out = tmp_path / "everything.mcap"
+    pace = threading.Event()
+    with Node("talker") as node:  # started after the recorder: found by the graph, as it appears
+        pubs = [node.create_publisher(String, name, 10) for name in ("/chatter", "/robot/status", "/_hidden")]
+        deadline = time.monotonic() + 60
+        while {t for t, _, _ in (readable(out) if out.exists() else [])} < {"/chatter", "/robot/status"}:
+            assert time.monotonic() < deadline, f"topics never recorded: {rec.err[-5:]}"
+            for pub in pubs:
+                pub.publish(String(data="hello"))
+            pace.wait(0.1)  # publishing pace, not a wait for the condition
+    assert rec.stop(signal.SIGINT) == 0, rec.err[-20:]
+    from rosbags.rosbag2 import Reader
+
+    with Reader(out) as r:
+        topics = {c.topic for c in r.connections}
+    assert {"/chatter", "/robot/status", "/tf", "/tf_static", "/joint_states", "/robot_description"} <= topics
+    assert not any(part.startswith("_") for topic in topics for part in topic.split("/"))
+
+
+def test_record_output_forms_and_tf_echo_alias(tmp_path):
+    import subprocess
+    import sys
+
+    def run(*words: str) -> subprocess.CompletedProcess[str]:
+        return subprocess.run([sys.executable, "-m", "robotmodel.cli.main", *words], check=False,
+                              capture_output=True, text=True, timeout=60, cwd=tmp_path)
+
+    proc = run("record", "-a")
+    assert proc.returncode == 2 and "one of the arguments -o/--output -O/--output-name is required" in proc.stderr
+    proc = run("record", "-o", "a.mcap", "-O", "b")
+    assert proc.returncode == 2 and "not allowed with argument" in proc.stderr
+    (tmp_path / "taken.mcap").write_bytes(b"keep")
+    proc = run("record", "-O", "taken")  # NAME gets .mcap, as rosbag's -O NAME gets .bag
+    assert proc.returncode == 1 and "taken.mcap already exists" in proc.stderr
+    # ROS 1's tf_echo name runs tf2_echo.
+    proc = run("tf_echo", "--help")
+    assert proc.returncode == 0 and proc.stdout.startswith("Usage: tf2_echo source_frame target_frame")

@@ -71,17 +71,21 @@ def test_bulk_decoding_equals_rosbags_bit_for_bit(ros1):
     assert in_blocks > 300  # the bulk path did the work
 
 
-def test_a_damaged_message_raises_message_error():
-    from robotmodel.errors import MessageError
-
+def test_a_damaged_message_is_left_out_and_counted():
     decoder = TFArrayDecoder()
     good = bytes(TS2.serialize_cdr(build(TS2, random_message(random.Random(1), [("a", "b")]), False),
                                    "tf2_msgs/msg/TFMessage"))
     for order in range(5):
         decoder.add(order, good)
     decoder.add(9, good[:-9])
-    with pytest.raises(MessageError):
-        decoder.flush()
+    miscounted = bytearray(good)
+    miscounted[4:8] = (10**6).to_bytes(4, "little")  # same length as the good ones: fails the template
+    decoder.add(7, bytes(miscounted))
+    blocks, slow = decoder.flush()
+    orders = sorted([int(o) for b in blocks for o in b.order] + [o for o, _ in slow])
+    assert orders == [0, 1, 2, 3, 4]
+    assert decoder.undecodable == 2
+    assert decoder.first_error is not None and decoder.first_error[0] == 7
 
 
 def test_proven_layout_rejects_rows_whose_structure_differs():
@@ -94,3 +98,13 @@ def test_proven_layout_rejects_rows_whose_structure_differs():
     got, _ = decoded_values(decoder)
     assert {got[k][0][:2] for k in range(0, 20, 2)} == {("map", "odom")}
     assert {got[k][0][:2] for k in range(1, 20, 2)} == {("abc", "xyz")}
+
+
+def test_sample_times_refuses_absurd_spans():
+    from robotmodel.errors import RecordingError
+    from robotmodel.recording import MAX_STEPS, sample_times
+
+    assert list(sample_times(10, 40, 10)) == [10, 20, 30, 40]
+    assert len(sample_times(0, (MAX_STEPS - 1) * 7, 7)) == MAX_STEPS
+    with pytest.raises(RecordingError, match=r"run\.bag: the transforms span .* more than 100,000"):
+        sample_times(0, MAX_STEPS * 7, 7, where="run.bag")

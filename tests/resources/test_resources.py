@@ -55,3 +55,27 @@ def test_resources_import_neither_xacro_nor_the_model() -> None:
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert eval(out) == ["robotmodel.errors", "robotmodel.resources", "robotmodel.resources._packages",
                          "robotmodel.resources._uri"]
+
+
+def test_package_not_found_names_the_way_to_give_it(tmp_path: Path) -> None:
+    """The one line says how to point at the package (--package-path, ROS_PACKAGE_PATH), and doing so works."""
+    import os
+
+    work = tmp_path / "work"
+    work.mkdir()
+    robot = work / "r.urdf.xacro"
+    robot.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+                     '<xacro:include filename="$(find my_pkg)/parts.xacro"/><link name="a"/></robot>')
+    pkg = _package(tmp_path / "elsewhere" / "my_pkg", "my_pkg")
+    (pkg / "parts.xacro").write_text('<robot xmlns:xacro="http://www.ros.org/wiki/xacro"/>')
+    env = {k: v for k, v in os.environ.items() if k not in ("ROS_PACKAGE_PATH", "AMENT_PREFIX_PATH")}
+
+    def run(*words: str) -> subprocess.CompletedProcess[str]:
+        return subprocess.run([sys.executable, "-m", "robotmodel.cli.main", *words], capture_output=True,
+                              text=True, timeout=120, check=False, cwd=work, env=env)
+
+    proc = run("check_urdf", str(robot))
+    assert proc.returncode == 1
+    (line,) = proc.stderr.splitlines()
+    assert "package 'my_pkg' not found" in line and "--package-path DIR" in line and "ROS_PACKAGE_PATH" in line
+    assert run("check_urdf", str(robot), "--package-path", str(tmp_path / "elsewhere")).returncode == 0

@@ -40,3 +40,32 @@ def test_write_gv_and_pdf(tmp_path: Path) -> None:
     assert gv.read_text(encoding="utf-8").startswith("digraph G {")
     assert shutil.which("dot"), "graphviz must be installed (.ci/run installs it)"
     assert pdf is not None and pdf.read_bytes().startswith(b"%PDF")
+
+
+# Names any publisher may send: control characters, quotes, YAML words and numbers, backslashes.
+HOSTILE_NAMES = ["cam\x07era", 'q"uote', "it's", "1", "true", "null", "x: y", "back\\slash", "new\nline",
+                 "\u00e9t\u00e9", "- dash", "#hash", "sp ace ", "cam\\x07era", "\U0001f600", "\u2028", "\x7f", "end\\"]
+
+
+def test_any_frame_name_reads_back_and_draws(tmp_path: Path) -> None:
+    import json
+    import subprocess
+
+    import yaml
+
+    buf = Buffer()
+    for name in HOSTILE_NAMES:
+        buf.set_transform_static(make("base", name), "pub\x01lisher")
+    frames = yaml.safe_load(buf.all_frames_as_yaml())
+    assert sorted(frames) == sorted(HOSTILE_NAMES)
+    assert {(v["parent"], v["broadcaster"]) for v in frames.values()} == {("base", "pub\x01lisher")}
+    # A name tf2's text already reads back is written exactly as tf2 writes it.
+    plain = Buffer()
+    plain.set_transform_static(make("base", "cam"), "pub")
+    assert plain.all_frames_as_yaml().startswith("cam: \n  parent: 'base'\n  broadcaster: 'pub'\n")
+
+    gv, pdf = write_view_frames(buf, tmp_path / "frames", 1_700_000_000_000_000_000)
+    assert pdf is not None and pdf.read_bytes().startswith(b"%PDF")
+    drawn = subprocess.run(["dot", "-Tjson", str(gv)], capture_output=True, text=True, check=True)
+    nodes = [o["name"] for o in json.loads(drawn.stdout)["objects"] if o["name"] != "cluster_legend"]
+    assert len(nodes) == len(set(nodes)) == len(HOSTILE_NAMES) + 2  # each frame, base, the legend

@@ -183,3 +183,20 @@ def test_to_nanoseconds_takes_every_time_form() -> None:
     assert to_nanoseconds(builtin_interfaces.Duration(sec=-2, nanosec=5)) == -2 * SEC + 5
     with pytest.raises(TypeError, match="a time must have sec and nanosec, or nanoseconds; got float"):
         to_nanoseconds(1.5)
+
+
+def test_parse_seconds_is_exact_and_bounded_to_tf2s_range() -> None:
+    from robotmodel.time import parse_seconds
+
+    assert parse_seconds("1700000000.123456789") == 1_700_000_000_123_456_789
+    assert parse_seconds(" 1e3 ") == 1000 * 10**9
+    assert parse_seconds("0.0000000019") == 1  # truncated toward zero, as rclpy's Time(seconds=...)
+    assert parse_seconds("9223372036.854775807") == 2**63 - 1
+    assert parse_seconds("-9223372036.854775808", signed=True) == -(2**63)
+    for text, signed in (("9223372036.854775808", False), ("1e300", False), ("1e300", True), ("-1", False),
+                         ("1e999999999", False), ("-9223372036.854775809", True)):
+        with pytest.raises(ValueError, match="out of range"):
+            parse_seconds(text, signed=signed)
+    for text in ("soon", "nan", "inf", ""):
+        with pytest.raises(ValueError, match="number of seconds"):
+            parse_seconds(text)
