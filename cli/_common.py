@@ -47,7 +47,7 @@ class CommandParser(argparse.ArgumentParser):
     """
 
     takes_mappings = False
-    #: Set by :func:`robotmodel.cli._ros_args.add_node_arguments`: ``--ros-args`` blocks are read first.
+    #: Set by :func:`robotmodel.cli._node_args.add_node_arguments`: ``--ros-args`` blocks are read first.
     takes_ros_args = False
     ros_node_name: str | None = None
 
@@ -58,7 +58,7 @@ class CommandParser(argparse.ArgumentParser):
         ros = None
         if self.takes_ros_args:
             # Before the mappings: '__ns:=/r1' is a ROS remap rule, not a xacro argument.
-            from robotmodel.cli._ros_args import RosArgsError, take_ros_args
+            from robotmodel.rcl import RosArgsError, take_ros_args
 
             try:
                 ros, words = take_ros_args(words, self.ros_node_name)
@@ -76,7 +76,8 @@ class CommandParser(argparse.ArgumentParser):
         if self.takes_mappings:
             parsed.mappings = mappings
         if ros is not None:
-            from robotmodel.cli._ros_args import RosArgsError, settle
+            from robotmodel.cli._node_args import settle
+            from robotmodel.rcl import RosArgsError
 
             try:
                 settle(parsed, ros)

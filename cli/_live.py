@@ -158,7 +158,7 @@ def serve_live(args: argparse.Namespace, desc: Any, initial: dict[str, float], f
             # Relative robot_description and joint_states: under --namespace, as rviz's displays resolve them.
             ros = getattr(args, "ros", None)
             if ros is not None and jsp_options is None:
-                from robotmodel.cli._ros_args import warn_ignored_params
+                from robotmodel.rcl import warn_ignored_params
 
                 warn_ignored_params(ros, args.namespace, getattr(args, "node_name", None) or "robotmodel_view")
             node = Node(getattr(args, "node_name", None) or "robotmodel_view", getattr(args, "namespace", "/"),

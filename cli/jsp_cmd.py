@@ -7,7 +7,7 @@ from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
 from robotmodel.cli._common import add_mapping_arguments
-from robotmodel.cli._ros_args import add_node_arguments
+from robotmodel.cli._node_args import add_node_arguments
 
 _PARAMS_HELP = (
     "Parameters (--ros-args -p NAME:=VALUE or --params-file FILE): rate, "
@@ -85,31 +85,31 @@ def jsp_settings(values: Mapping[str, Any], warn: Callable[[str], None], *, rate
 
     Raises RosArgsError (rclcpp's text) for a wrong type; ``warn`` hears of the overrides not used.
     """
-    from robotmodel.cli._ros_args import RosArgsError
-    from robotmodel.cli._ros_params import typed, warn_unused
+    from robotmodel.rcl import RosArgsError
+    from robotmodel.rcl import typed_param, warn_unused_params
 
     # joint_state_publisher declares its parameters from the overrides (rclpy), so a number is a number.
-    given = typed(values, "rate", "integer", "double")
+    given = typed_param(values, "rate", "integer", "double")
     if given is not None:
         if not (isinstance(given, (int, float)) and given > 0):
             raise RosArgsError(f"rate must be a positive number of Hz, got '{given}'")
         rate = float(given)
     settings: dict[str, Any] = {"rate": rate, "zeros": dict(zeros or {}), "source_list": list(source_list)}
     for flag in _BOOLS:
-        value = typed(values, flag, "bool")
+        value = typed_param(values, flag, "bool")
         if value is not None:
             settings[flag] = value
-    delta = typed(values, "delta", "double", "integer")
+    delta = typed_param(values, "delta", "double", "integer")
     if isinstance(delta, (int, float)):
         settings["delta"] = float(delta)
-    sources = typed(values, "source_list", "string_array")
+    sources = typed_param(values, "source_list", "string_array")
     if isinstance(sources, tuple):
         settings["source_list"] = [str(topic) for topic in sources]
     for param in values:
-        zero = typed(values, param, "double", "integer") if param.startswith("zeros.") else None
+        zero = typed_param(values, param, "double", "integer") if param.startswith("zeros.") else None
         if isinstance(zero, (int, float)):
             settings["zeros"][param.removeprefix("zeros.")] = float(zero)
-    warn_unused(values, lambda n: n in _BOOLS or n in ("rate", "delta", "source_list") or n.startswith("zeros."),
+    warn_unused_params(values, lambda n: n in _BOOLS or n in ("rate", "delta", "source_list") or n.startswith("zeros."),
                 warn, _WHY)
     return settings
 
@@ -120,8 +120,8 @@ def run(args: argparse.Namespace) -> int:
 
     from robotmodel.cli._bus_args import stop_on_signals
     from robotmodel.cli._common import load_description
-    from robotmodel.cli._publisher_log import ros_console
-    from robotmodel.cli._ros_args import RosArgsError, logger_name, node_params
+    from robotmodel.rcl import ros_console
+    from robotmodel.rcl import RosArgsError, logger_name, node_params
 
     from robotmodel.bus import Node
     from robotmodel.publishers import JointStatePublisher

@@ -14,7 +14,7 @@ from pathlib import Path
 from typing import Any
 
 from robotmodel.cli._bus_args import stop_on_signals
-from robotmodel.cli._rosfmt import ros_log
+from robotmodel.rcl import ros_log
 
 __all__ = ["register", "run"]
 

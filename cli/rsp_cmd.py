@@ -6,7 +6,7 @@ import argparse
 from typing import Any
 
 from robotmodel.cli._common import add_model_arguments
-from robotmodel.cli._ros_args import add_node_arguments
+from robotmodel.cli._node_args import add_node_arguments
 
 _PARAMS_HELP = (
     "Parameters (--ros-args -p NAME:=VALUE or --params-file FILE), with ROS's types: "
@@ -46,16 +46,16 @@ def register(sub: Any) -> None:
 
 def _settings(args: argparse.Namespace, name: str, log: Any) -> str | None:
     """Apply the node's parameter overrides to ``args``; returns the robot_description text, if given."""
-    from robotmodel.cli._ros_args import node_params
-    from robotmodel.cli._ros_params import typed, warn_unused
+    from robotmodel.rcl import node_params
+    from robotmodel.rcl import typed_param, warn_unused_params
 
     values = node_params(args.ros, args.namespace, name)
     for param, kind in (("publish_frequency", "double"), ("ignore_timestamp", "bool"), ("frame_prefix", "string")):
-        value = typed(values, param, kind)
+        value = typed_param(values, param, kind)
         if value is not None:
             setattr(args, param, value)
-    text = typed(values, "robot_description", "string")
-    warn_unused(values, lambda n: n in _PARAMS, log.warning, _WHY)
+    text = typed_param(values, "robot_description", "string")
+    warn_unused_params(values, lambda n: n in _PARAMS, log.warning, _WHY)
     return None if text is None else str(text)
 
 
@@ -65,8 +65,8 @@ def run(args: argparse.Namespace) -> int:
 
     from robotmodel.cli._bus_args import stop_on_signals
     from robotmodel.cli._common import load_description
-    from robotmodel.cli._publisher_log import ros_console
-    from robotmodel.cli._ros_args import RosArgsError, logger_name
+    from robotmodel.rcl import ros_console
+    from robotmodel.rcl import RosArgsError, logger_name
 
     from robotmodel.bus import Node
     from robotmodel.publishers import RobotStatePublisher, check_publish_frequency

@@ -13,7 +13,7 @@ import threading
 import time
 from typing import Any
 
-from robotmodel.cli._ros_args import add_node_arguments
+from robotmodel.cli._node_args import add_node_arguments
 
 __all__ = ["message_to_yaml", "register"]
 
@@ -154,7 +154,7 @@ def run_echo(args: argparse.Namespace) -> int:
     lock = threading.Lock()
     problems: list[str] = []
 
-    from robotmodel.cli._ros_args import warn_ignored_params
+    from robotmodel.rcl import warn_ignored_params
 
     warn_ignored_params(args.ros, args.namespace, args.node_name or "_robotmodel_topic_echo")
     with Node(args.node_name or "_robotmodel_topic_echo", args.namespace, connect=args.connect,

@@ -12,7 +12,7 @@ from pathlib import Path
 from typing import Any
 
 from robotmodel.cli._common import add_mapping_arguments, joint_values
-from robotmodel.cli._ros_args import add_node_arguments
+from robotmodel.cli._node_args import add_node_arguments
 
 from robotmodel.errors import RobotModelError
 
