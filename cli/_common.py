@@ -77,6 +77,7 @@ class CommandParser(argparse.ArgumentParser):
             parsed.mappings = mappings
         if ros is not None:
             from robotmodel.cli._node_args import settle
+
             from robotmodel.rcl import RosArgsError
 
             try:

@@ -142,8 +142,9 @@ def serve_live(args: argparse.Namespace, desc: Any, initial: dict[str, float], f
     ``jsp_options`` are the publishing JointStatePublisher's settings from the ROS parameters
     (the caller has read them); without them every parameter override is named as ignored.
     """
-    from robotmodel.cli._bus_args import stop_on_signals
     from robotmodel.cli.view_cmd import make_viewer
+
+    from robotmodel.signals import stop_on_signals
 
     publish = publish or getattr(args, "publish", False)
     follow = getattr(args, "follow", False)

@@ -85,8 +85,7 @@ def jsp_settings(values: Mapping[str, Any], warn: Callable[[str], None], *, rate
 
     Raises RosArgsError (rclcpp's text) for a wrong type; ``warn`` hears of the overrides not used.
     """
-    from robotmodel.rcl import RosArgsError
-    from robotmodel.rcl import typed_param, warn_unused_params
+    from robotmodel.rcl import RosArgsError, typed_param, warn_unused_params
 
     # joint_state_publisher declares its parameters from the overrides (rclpy), so a number is a number.
     given = typed_param(values, "rate", "integer", "double")
@@ -118,13 +117,12 @@ def run(args: argparse.Namespace) -> int:
     """Load the robot (or wait for it on the bus) and publish until stopped."""
     import sys
 
-    from robotmodel.cli._bus_args import stop_on_signals
     from robotmodel.cli._common import load_description
-    from robotmodel.rcl import ros_console
-    from robotmodel.rcl import RosArgsError, logger_name, node_params
 
     from robotmodel.bus import Node
     from robotmodel.publishers import JointStatePublisher
+    from robotmodel.rcl import RosArgsError, logger_name, node_params, ros_console
+    from robotmodel.signals import stop_on_signals
 
     name = args.node_name or _NODE
     log = ros_console(logger_name(args.namespace, name))

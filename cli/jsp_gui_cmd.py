@@ -35,10 +35,10 @@ def run(args: argparse.Namespace) -> int:
 
     from robotmodel.cli._common import joint_values
     from robotmodel.cli._live import serve_live
-    from robotmodel.rcl import RosArgsError, logger_name, node_params
-    from robotmodel.rcl import ros_log
     from robotmodel.cli.jsp_cmd import jsp_settings
     from robotmodel.cli.view_cmd import _load, frames_spec
+
+    from robotmodel.rcl import RosArgsError, logger_name, node_params, ros_log
 
     name = args.node_name or "robotmodel_view"
     try:

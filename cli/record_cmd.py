@@ -13,8 +13,8 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from robotmodel.cli._bus_args import stop_on_signals
 from robotmodel.rcl import ros_log
+from robotmodel.signals import stop_on_signals
 
 __all__ = ["register", "run"]
 

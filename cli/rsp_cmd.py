@@ -46,8 +46,7 @@ def register(sub: Any) -> None:
 
 def _settings(args: argparse.Namespace, name: str, log: Any) -> str | None:
     """Apply the node's parameter overrides to ``args``; returns the robot_description text, if given."""
-    from robotmodel.rcl import node_params
-    from robotmodel.rcl import typed_param, warn_unused_params
+    from robotmodel.rcl import node_params, typed_param, warn_unused_params
 
     values = node_params(args.ros, args.namespace, name)
     for param, kind in (("publish_frequency", "double"), ("ignore_timestamp", "bool"), ("frame_prefix", "string")):
@@ -63,13 +62,12 @@ def run(args: argparse.Namespace) -> int:
     """Load the robot, publish, and serve joint states until stopped."""
     import sys
 
-    from robotmodel.cli._bus_args import stop_on_signals
     from robotmodel.cli._common import load_description
-    from robotmodel.rcl import ros_console
-    from robotmodel.rcl import RosArgsError, logger_name
 
     from robotmodel.bus import Node
     from robotmodel.publishers import RobotStatePublisher, check_publish_frequency
+    from robotmodel.rcl import RosArgsError, logger_name, ros_console
+    from robotmodel.signals import stop_on_signals
 
     name = args.node_name or _NODE
     log = ros_console(logger_name(args.namespace, name))

@@ -12,7 +12,7 @@ import argparse
 import sys
 from typing import Any
 
-from robotmodel.cli._bag_args import add_bag_arguments, load_bag
+from robotmodel.cli._bag_args import add_bag_arguments
 
 __all__ = ["register", "run"]
 
@@ -37,9 +37,9 @@ def run(args: argparse.Namespace) -> int:
     if args.rate is not None and not 0 < args.rate < float("inf"):
         print("robotmodel tf-export: error: --rate must be a positive number", file=sys.stderr)
         return 2
-    from robotmodel.recording import pose_series, write_poses
+    from robotmodel.recording import load_recording, pose_series, write_poses
 
-    loaded = load_bag(args)
+    loaded = load_recording(args.bag, robot=args.urdf, progress=False if args.no_progress else None)
     series = pose_series(loaded.buffer, args.source_frame, args.target_frame, args.rate)
     write_poses(series, args.output)
     print(f"{len(series.stamps)} pose(s) of {args.target_frame} in {args.source_frame} written to {args.output}",

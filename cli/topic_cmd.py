@@ -139,10 +139,9 @@ def _echo_qos(node: Any, topic: str) -> Any:
 
 def run_echo(args: argparse.Namespace) -> int:
     """Subscribe to the topic and print each message until Ctrl-C, --once or --timeout."""
-    from robotmodel.cli._bus_args import stop_on_signals
-
     from robotmodel.bus import Node
     from robotmodel.errors import BusError
+    from robotmodel.signals import stop_on_signals
 
     fields = None
     if args.field is not None:

@@ -130,7 +130,7 @@ class _Events:
                     raise ValueError(f"Sequences can only hold scalars, at line {item.start_mark.line + 1}")
                 value = self._scalar(item)
                 if items and type(value) is not type(items[0]):
-                    raise ValueError(f"Sequence should be of same type. ParamValue type '{param_type_name(value)}' do not "
+                    raise ValueError(f"Sequence should be of same type. Value type '{param_type_name(value)}' do not "
                                      f"belong at line_num {item.start_mark.line + 1}")
                 items.append(value)
             self.take()

@@ -11,12 +11,12 @@ import math
 from collections.abc import Sequence
 from typing import NamedTuple
 
-from robotmodel.cli._rosfmt import strtod_prefix
+from robotmodel.errors import EchoArgsError
+from robotmodel.rcl._console import strtod_prefix
 
 __all__ = [
     "USAGE",
     "EchoArgs",
-    "EchoArgsError",
     "euler_ypr",
     "failure_text",
     "format_echo",
@@ -34,15 +34,6 @@ USAGE = (
 
 # Largest finite float32: std::stof reports anything beyond it as out of range.
 _FLT_MAX = 3.4028234663852886e38
-
-
-class EchoArgsError(Exception):
-    """A bad command line: ``str()`` is the text to print, ``code`` the exit code tf2_echo uses."""
-
-    def __init__(self, message: str, code: int, to_stdout: bool = False) -> None:
-        super().__init__(message)
-        self.code = code
-        self.to_stdout = to_stdout
 
 
 class EchoArgs(NamedTuple):

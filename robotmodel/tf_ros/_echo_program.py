@@ -1,7 +1,7 @@
-"""``robotmodel tf2-echo SOURCE TARGET [RATE]`` (alias ``tf2_echo``): print a transform as it arrives.
+"""tf2_echo as a program: ``tf2_echo SOURCE TARGET [RATE]`` prints a transform as it arrives.
 
 With ``--bag FILE [--time T | --every DT]`` it answers from a recording instead of the
-bus, in the same format (see :mod:`robotmodel.cli._bag_echo`).
+bus, in the same format (see :mod:`robotmodel.tf_ros._bag_echo`).
 
 Prints TARGET's pose in SOURCE (``lookupTransform(SOURCE, TARGET, latest)``) every
 1/RATE seconds (default 1 Hz) in tf2_echo's format; until the frames are connected it logs
@@ -10,39 +10,20 @@ tf2_echo's throttled ``Waiting for transform ...`` line. Ctrl-C or SIGTERM end i
 
 from __future__ import annotations
 
-import argparse
 import sys
 import time
+from collections.abc import Sequence
 from typing import Any
 
-from robotmodel.cli._bag_args import BagWordsError, split_bag_words
-from robotmodel.cli._bus_args import split_connect, stop_on_signals
-from robotmodel.cli._echo_fmt import (
-    USAGE,
-    EchoArgsError,
-    failure_text,
-    format_echo,
-    parse_echo_args,
-    waiting_message,
-)
-from robotmodel.cli._ros_args import RosArgsError, split_ros_words, warn_ignored_params
-from robotmodel.cli._rosfmt import ros_log
+from robotmodel.errors import EchoArgsError, RosArgsError
+from robotmodel.rcl import ros_log, split_ros_words, warn_ignored_params
+from robotmodel.signals import stop_on_signals
+from robotmodel.tf_ros._echo_args import USAGE, failure_text, format_echo, parse_echo_args, waiting_message
+from robotmodel.tf_ros._words import split_bag_words, split_connect
 
-__all__ = ["can_transform_reason", "register", "run"]
+__all__ = ["can_transform_reason", "run_tf2_echo"]
 
 _NODE = "tf2_echo"
-
-
-def register(sub: Any) -> None:
-    """Add the ``tf2-echo`` subcommand (it parses its own words, as ROS's does)."""
-    parser: argparse.ArgumentParser = sub.add_parser(
-        "tf2-echo", aliases=["tf2_echo"], prefix_chars="\x01", add_help=False,
-        help="print a transform from the bus (or a recording: --bag FILE) in tf2_echo's format",
-        description="tf2-echo SOURCE TARGET [RATE] [--connect ENDPOINT] [--namespace NS] [--ros-args -r /tf:=TOPIC] | "
-                    "tf2-echo --bag FILE SOURCE TARGET [--time T | --every DT] [--urdf FILE]",
-    )
-    parser.add_argument("words", nargs="*")
-    parser.set_defaults(func=run)
 
 
 def can_transform_reason(buffer: Any, target: str, source: str) -> str:
@@ -64,10 +45,15 @@ def can_transform_reason(buffer: Any, target: str, source: str) -> str:
     return "" if ok else str(reason)
 
 
-def run(args: argparse.Namespace) -> int:
-    """Listen, wait for the frames, then print the transform at the given rate."""
+def run_tf2_echo(words: Sequence[str]) -> int:
+    """Run tf2_echo on ``words`` (the words after the program's name); returns the exit code.
+
+    Listens on the bus, waits for the frames, then prints the transform at the given rate
+    until SIGINT/SIGTERM (installs handlers: main thread only). With ``--bag FILE`` it reads
+    the recording instead. Bad words print tf2_echo's text and give its exit code.
+    """
     try:
-        words, namespace, ros = split_ros_words(args.words, _NODE)
+        words, namespace, ros = split_ros_words(words, _NODE)
     except RosArgsError as exc:
         print(f"robotmodel tf2-echo: error: {exc}", file=sys.stderr)
         return 2
@@ -77,9 +63,9 @@ def run(args: argparse.Namespace) -> int:
         return 0
     try:
         words, bag_options = split_bag_words(words)
-    except BagWordsError as exc:
-        print(f"robotmodel tf2-echo: error: {exc}", file=sys.stderr)
-        return 2
+    except EchoArgsError as exc:
+        print(exc, file=sys.stderr)
+        return exc.code
     if bag_options and "bag" not in bag_options:
         print("robotmodel tf2-echo: error: --time, --every and --urdf need --bag FILE", file=sys.stderr)
         return 2
@@ -90,7 +76,7 @@ def run(args: argparse.Namespace) -> int:
               flush=True)
         return int(exc.code)
     if bag_options:
-        from robotmodel.cli._bag_echo import run_bag_echo
+        from robotmodel.tf_ros._bag_echo import run_bag_echo
 
         return int(run_bag_echo(echo, bag_options))
 

@@ -21,12 +21,12 @@ import math
 from collections.abc import Callable, Sequence
 from typing import NamedTuple
 
-from robotmodel.cli._rosfmt import strtod_prefix
+from robotmodel.errors import StaticArgsError
+from robotmodel.rcl._console import strtod_prefix
 
 __all__ = [
     "DEPRECATION_WARNING",
     "USAGE",
-    "StaticArgsError",
     "StaticTransformSpec",
     "parse_static_args",
     "rpy_quaternion",
@@ -65,10 +65,6 @@ _QUAT_TOLERANCE = 10e-3
 
 _FLOAT_FLAGS = ("--x", "--y", "--z", "--qx", "--qy", "--qz", "--qw", "--roll", "--pitch", "--yaw")
 _STRING_FLAGS = ("--frame-id", "--child-frame-id")
-
-
-class StaticArgsError(Exception):
-    """The words do not form a valid command line; ``str()`` is ROS 2's error text."""
 
 
 class StaticTransformSpec(NamedTuple):

@@ -1,45 +1,30 @@
-"""``robotmodel static-transform-publisher`` (alias ``static_transform_publisher``).
+"""static_transform_publisher as a program (``robotmodel static-transform-publisher``).
 
 Publishes one transform, latched on ``/tf_static``, until Ctrl-C or SIGTERM (exit 0), as
 ROS 2 Jazzy's tf2_ros program does; ROS 1 tf's forms with a period republish on ``/tf``.
-The argument forms and texts are in :mod:`robotmodel.cli._static_args`.
+The argument forms and texts are in :mod:`robotmodel.tf_ros._static_args`.
 """
 
 from __future__ import annotations
 
-import argparse
 import sys
 import time
+from collections.abc import Sequence
 from typing import Any
 
-from robotmodel.cli._bus_args import split_connect, stop_on_signals
-from robotmodel.cli._ros_args import RosArgsError, split_ros_words, warn_ignored_params
-from robotmodel.cli._rosfmt import ros_log
-from robotmodel.cli._static_args import (
+from robotmodel.errors import RosArgsError, StaticArgsError
+from robotmodel.rcl import ros_log, split_ros_words, warn_ignored_params
+from robotmodel.signals import stop_on_signals
+from robotmodel.tf_ros._static_args import (
     USAGE,
-    StaticArgsError,
     StaticTransformSpec,
     parse_static_args,
     startup_message,
     validation_errors,
 )
+from robotmodel.tf_ros._words import split_connect
 
-__all__ = ["register", "run"]
-
-
-def register(sub: Any) -> None:
-    """Add the ``static-transform-publisher`` subcommand (it parses its own words, as ROS's does)."""
-    parser: argparse.ArgumentParser = sub.add_parser(
-        "static-transform-publisher", aliases=["static_transform_publisher"],
-        prefix_chars="+", add_help=False,
-        help="publish a static transform on /tf_static (tf2_ros's flags and positional forms)",
-        description="--x X --y Y --z Z [--qx --qy --qz --qw | --roll --pitch --yaw] --frame-id F "
-        "--child-frame-id C [--connect ENDPOINT] [--namespace NS] [--ros-args -r __ns:=/NS -r /tf_static:=TOPIC]; "
-        "or x y z yaw pitch roll F C [period_ms]; or "
-        "x y z qx qy qz qw F C [period_ms]",
-    )
-    parser.add_argument("words", nargs="*")
-    parser.set_defaults(func=run)
+__all__ = ["run_static_transform_publisher"]
 
 
 def _transform(spec: StaticTransformSpec, stamp_ns: int) -> Any:
@@ -48,10 +33,14 @@ def _transform(spec: StaticTransformSpec, stamp_ns: int) -> Any:
     return make_transform(spec.frame_id, spec.child_frame_id, spec.translation, spec.rotation, stamp_ns)
 
 
-def run(args: argparse.Namespace) -> int:
-    """Parse, validate, publish, then wait for a stop signal."""
+def run_static_transform_publisher(words: Sequence[str]) -> int:
+    """Run static_transform_publisher on ``words`` (after the program's name); returns the exit code.
+
+    Parses ROS 2's and ROS 1's forms, validates, publishes, then waits for SIGINT/SIGTERM
+    (installs handlers: main thread only). Bad words print ROS 2's text and give exit 1.
+    """
     try:
-        words, namespace, ros = split_ros_words(args.words)
+        words, namespace, ros = split_ros_words(words)
     except RosArgsError as exc:
         print(f"robotmodel static-transform-publisher: error: {exc}", file=sys.stderr)
         return 2

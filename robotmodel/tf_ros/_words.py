@@ -1,20 +1,24 @@
-"""Bus options the TF tools share: ``--connect ENDPOINT`` (repeatable), and clean stops on signals."""
+"""Words the ROS-shaped TF programs take besides ROS's own: ``--connect ENDPOINT`` and the recording options.
+
+tf2_echo and static_transform_publisher parse their own words (ROS's exact texts), so these
+options are taken out before the ROS parser sees them.
+"""
 
 from __future__ import annotations
 
 from collections.abc import Sequence
 
-from robotmodel.signals import stop_on_signals
+from robotmodel.errors import EchoArgsError
 
-__all__ = ["split_connect", "stop_on_signals", "strip_ros_args"]
+__all__ = ["parse_seconds_ns", "split_bag_words", "split_connect"]
+
+_VALUED = ("--bag", "--time", "--every", "--urdf")
 
 
 def split_connect(words: Sequence[str]) -> tuple[list[str], list[str]]:
     """Take ``--connect ENDPOINT`` / ``--connect=ENDPOINT`` out of raw words: (other words, endpoints).
 
-    The ROS-shaped commands parse their own words (ROS's exact texts), so the bus option
-    is removed before they see them. A trailing ``--connect`` without a value is left in
-    place for the command to reject.
+    A trailing ``--connect`` without a value is left in place for the command to reject.
     """
     rest: list[str] = []
     endpoints: list[str] = []
@@ -32,20 +36,41 @@ def split_connect(words: Sequence[str]) -> tuple[list[str], list[str]]:
     return rest, endpoints
 
 
-def strip_ros_args(words: Sequence[str]) -> list[str]:
-    """The words without ROS's own arguments, as ``rclcpp::init_and_remove_ros_arguments`` leaves them.
+def _bad(text: str) -> EchoArgsError:
+    return EchoArgsError(f"robotmodel tf2-echo: error: {text}", 2)
 
-    Each ``--ros-args`` block runs to a ``--`` (dropped too) or to the end. The blocks are
-    dropped unread: the node commands read them with :mod:`robotmodel.cli._ros_args`
-    (remaps, parameters, namespace), which refuses what rcl refuses.
+
+def split_bag_words(words: Sequence[str]) -> tuple[list[str], dict[str, str | bool]]:
+    """Take ``--bag``, ``--time``, ``--every``, ``--urdf`` and ``--no-progress`` out of raw words.
+
+    A valued option without its value raises :class:`robotmodel.errors.EchoArgsError` (exit 2).
     """
     rest: list[str] = []
-    inside = False
-    for word in words:
-        if inside:
-            inside = word != "--"
-        elif word == "--ros-args":
-            inside = True
+    found: dict[str, str | bool] = {}
+    it = iter(words)
+    for word in it:
+        name, eq, value = word.partition("=")
+        if name in _VALUED:
+            if not eq:
+                value = next(it, "")
+                if not value:
+                    raise _bad(f"{name} needs a value")
+            found[name[2:]] = value
+        elif word == "--no-progress":
+            found["no_progress"] = True
         else:
             rest.append(word)
-    return rest
+    return rest, found
+
+
+def parse_seconds_ns(text: str, what: str) -> int:
+    """Seconds as text (``12.5``, ``1700000000.123456789``) to integer ns, exactly; EchoArgsError if not."""
+    from decimal import Decimal, InvalidOperation
+
+    try:
+        value = Decimal(text)
+    except InvalidOperation:
+        raise _bad(f"{what} must be a number of seconds, got '{text}'") from None
+    if not value.is_finite():
+        raise _bad(f"{what} must be a finite number of seconds, got '{text}'")
+    return int(value * 1_000_000_000)
