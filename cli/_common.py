@@ -6,13 +6,14 @@ Kept free of heavy imports: every command module imports this at ``robotmodel --
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import logging
 import os
 import sys
 import tempfile
 from collections.abc import Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, NoReturn
+from typing import TYPE_CHECKING, Any, NoReturn, TypeVar
 
 from robotmodel.errors import RobotModelError
 
@@ -27,6 +28,7 @@ __all__ = [
     "apply_verbose",
     "joint_values",
     "load_description",
+    "options_from",
     "read_stdin_document",
     "split_mappings",
     "take_mappings",
@@ -34,6 +36,7 @@ __all__ = [
 ]
 
 REMAP = ":="
+T = TypeVar("T")
 
 
 class CommandParser(argparse.ArgumentParser):
@@ -103,6 +106,12 @@ class CommandParser(argparse.ArgumentParser):
         """Print the usage and ``robotmodel CMD: error: message``; exit 2 (as argparse and xacro)."""
         self.print_usage(sys.stderr)
         self.exit(2, f"{self.prog}: error: {message}\n")
+
+
+def options_from(cls: type[T], args: argparse.Namespace) -> T:
+    """A library options dataclass filled from the parsed arguments of the same names (others keep defaults)."""
+    names = {f.name for f in dataclasses.fields(cls)}  # type: ignore[arg-type]
+    return cls(**{k: v for k, v in vars(args).items() if k in names})
 
 
 def take_mappings(words: Sequence[str]) -> tuple[dict[str, str], list[str]]:

@@ -1,24 +1,28 @@
-"""``robotmodel joint-state-publisher``: ROS 2's joint_state_publisher as a process on the bus."""
+"""robot_state_publisher and joint_state_publisher as programs: ROS parameters in, a node on the bus until stopped.
+
+The ``robotmodel robot-state-publisher`` and ``joint-state-publisher`` commands are
+:func:`run_robot_state_publisher` and :func:`run_joint_state_publisher`; the node's
+``--ros-args`` parameters map onto the publishers' settings as ROS's nodes read them (a
+parameter wins over the same setting's flag; one with no use here is named in a warning),
+and :func:`jsp_settings` is that mapping for joint_state_publisher (its GUI uses it too).
+"""
 
 from __future__ import annotations
 
-import argparse
+import os
+import sys
 from collections.abc import Callable, Mapping, Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from robotmodel.cli._common import add_mapping_arguments
-from robotmodel.cli._node_args import add_node_arguments
+from robotmodel.errors import RosArgsError
 
-_PARAMS_HELP = (
-    "Parameters (--ros-args -p NAME:=VALUE or --params-file FILE): rate, "
-    "publish_default_positions, publish_default_velocities, publish_default_efforts, "
-    "use_mimic_tags, use_smallest_joint_limits (bool), source_list (a list: "
-    "source_list:=\"['/a/joint_states']\"), delta, zeros.JOINT (numbers; in a params file "
-    "'zeros: {j1: 0.5}'). A parameter wins over the same setting's --flag (zeros per joint); "
-    "dependent_joints and robot_description are reported and ignored, as joint_state_publisher "
-    "takes mimic joints from the URDF and the robot from FILE or the topic."
-)
-_NODE = "joint_state_publisher"
+if TYPE_CHECKING:
+    from robotmodel.rcl import RosArgs
+
+__all__ = ["jsp_settings", "run_joint_state_publisher", "run_robot_state_publisher"]
+
+_JSP = "joint_state_publisher"
+_RSP = "robot_state_publisher"
 _BOOLS = ("publish_default_positions", "publish_default_velocities", "publish_default_efforts", "use_mimic_tags",
           "use_smallest_joint_limits")
 _WHY = {
@@ -27,56 +31,8 @@ _WHY = {
     "use_sim_time": "there is no /clock here",
     "qos_overrides": "QoS overrides are not read here",
 }
-
-
-def _zero(word: str) -> tuple[str, float]:
-    name, sep, text = word.partition("=")
-    try:
-        if not sep or not name:
-            raise ValueError
-        return name, float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected NAME=VALUE with a number, got '{word}'") from None
-
-
-def _rate(text: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        value = 0.0
-    if not value > 0:
-        raise argparse.ArgumentTypeError(f"rate must be a positive number of Hz, got '{text}'")
-    return value
-
-
-def register(sub: Any) -> None:
-    """Add the ``joint-state-publisher`` subcommand (alias ``joint_state_publisher``)."""
-    parser: argparse.ArgumentParser = sub.add_parser(
-        "joint-state-publisher", aliases=["joint_state_publisher"],
-        help="publish /joint_states for a robot's movable joints (joint_state_publisher)",
-        description="ROS 2's joint_state_publisher: publishes a JointState for every movable joint on "
-        "/joint_states at --rate, each at 0 (or the middle of its limits when 0 is outside them) unless "
-        "--zeros or a --source-list topic says otherwise; mimic joints follow their masters. Without FILE "
-        "the robot comes from /robot_description, and every new description there is followed. "
-        "Put FILE before --zeros/--source-list. Runs until Ctrl-C or SIGTERM.",
-    )
-    add_mapping_arguments(parser)
-    parser.add_argument("file", metavar="FILE", nargs="?", help="a .urdf or .xacro file (default: the "
-                        "robot_description topic)")
-    parser.add_argument("--rate", type=_rate, default=10.0, metavar="HZ", help="publishing rate (default 10)")
-    parser.add_argument("--zeros", type=_zero, nargs="+", action="extend", default=[], metavar="NAME=VALUE",
-                        help="initial joint positions, used as given")
-    parser.add_argument("--source-list", nargs="+", action="extend", default=[], metavar="TOPIC",
-                        help="JointState topics whose values are merged in (latest value per joint wins)")
-    parser.add_argument("--package-path", action="append", default=[], metavar="DIR",
-                        help="search DIR first for ROS packages ($(find pkg), package://); repeatable")
-    parser.add_argument("--untrusted", action="store_true",
-                        help="refuse $(env), $(optenv) and reads outside the input's package roots")
-    parser.add_argument("--connect", action="append", default=[], metavar="ENDPOINT",
-                        help="zenoh endpoint to connect to (e.g. tcp/192.168.1.10:7447); repeatable")
-    add_node_arguments(parser, _NODE)
-    parser.epilog = f"{parser.epilog} {_PARAMS_HELP}"
-    parser.set_defaults(func=run)
+_RSP_PARAMS = frozenset({"robot_description", "publish_frequency", "ignore_timestamp", "frame_prefix"})
+_RSP_WHY = {"use_sim_time": "there is no /clock here", "qos_overrides": "QoS overrides are not read here"}
 
 
 def jsp_settings(values: Mapping[str, Any], warn: Callable[[str], None], *, rate: float = 10.0,
@@ -113,29 +69,92 @@ def jsp_settings(values: Mapping[str, Any], warn: Callable[[str], None], *, rate
     return settings
 
 
-def run(args: argparse.Namespace) -> int:
-    """Load the robot (or wait for it on the bus) and publish until stopped."""
-    import sys
+def _load(file: str | None, mappings: Mapping[str, str], package_paths: Sequence[str | os.PathLike[str]],
+          untrusted: bool) -> Any:
+    from robotmodel.model import load_source
 
-    from robotmodel.cli._common import load_description
+    if file is None:
+        return None
+    return load_source(file, mappings, package_paths=package_paths, untrusted=untrusted)[0]
 
+
+def run_joint_state_publisher(file: str | None = None, mappings: Mapping[str, str] | None = None, *,
+                              package_paths: Sequence[str | os.PathLike[str]] = (), untrusted: bool = False,
+                              rate: float = 10.0, zeros: Mapping[str, float] | None = None,
+                              source_list: Sequence[str] = (), connect: Sequence[str] = (), namespace: str = "/",
+                              ros: RosArgs | None = None) -> int:
+    """joint_state_publisher until SIGINT/SIGTERM: the robot from ``file`` ('-': stdin) or the topic.
+
+    The flags' settings (``rate``, ``zeros``, ``source_list``) give way to the node's ROS
+    parameters in ``ros``; a parameter of the wrong type prints rclcpp's text and gives 2.
+    Returns the exit code.
+    """
     from robotmodel.bus import Node
-    from robotmodel.publishers import JointStatePublisher
-    from robotmodel.rcl import RosArgsError, logger_name, node_params, ros_console
+    from robotmodel.publishers._jsp import JointStatePublisher
+    from robotmodel.rcl import RosArgs, logger_name, node_params, ros_console
     from robotmodel.signals import stop_on_signals
 
-    name = args.node_name or _NODE
-    log = ros_console(logger_name(args.namespace, name))
+    ros = ros or RosArgs()
+    name = ros.node_name or _JSP
+    log = ros_console(logger_name(namespace, name))
     try:
-        settings = jsp_settings(node_params(args.ros, args.namespace, name), log.warning, rate=args.rate,
-                                zeros=dict(args.zeros), source_list=args.source_list)
+        settings = jsp_settings(node_params(ros, namespace, name), log.warning, rate=rate, zeros=dict(zeros or {}),
+                                source_list=source_list)
     except RosArgsError as exc:
         print(f"robotmodel joint-state-publisher: error: {exc}", file=sys.stderr)
         return 2
-    desc = load_description(args)[0] if args.file is not None else None
+    desc = _load(file, mappings or {}, package_paths, untrusted)
     stop = stop_on_signals()
     # joint_states, robot_description and relative --source-list topics resolve under the namespace.
-    with Node(name, args.namespace, connect=args.connect, remappings=args.ros.remaps) as node, JointStatePublisher(
+    with Node(name, namespace, connect=list(connect), remappings=ros.remaps) as node, JointStatePublisher(
+            desc, bus=node, logger=log, **settings):
+        stop.wait()
+    return 0
+
+
+def run_robot_state_publisher(file: str | None = None, mappings: Mapping[str, str] | None = None, *,
+                              package_paths: Sequence[str | os.PathLike[str]] = (), untrusted: bool = False,
+                              publish_frequency: float = 20.0, frame_prefix: str = "",
+                              ignore_timestamp: bool = False, connect: Sequence[str] = (), namespace: str = "/",
+                              ros: RosArgs | None = None) -> int:
+    """robot_state_publisher until SIGINT/SIGTERM: the robot from ``file`` ('-': stdin) or ``-p robot_description``.
+
+    The node's ROS parameters in ``ros`` win over the keyword settings; a parameter of the
+    wrong type prints rclcpp's text and gives 2; no robot at all logs RSP's FATAL line and
+    gives 1. Returns the exit code.
+    """
+    from robotmodel.bus import Node
+    from robotmodel.publishers._rsp import RobotStatePublisher
+    from robotmodel.publishers._rsp_state import check_publish_frequency
+    from robotmodel.rcl import RosArgs, logger_name, node_params, ros_console, typed_param, warn_unused_params
+    from robotmodel.signals import stop_on_signals
+
+    ros = ros or RosArgs()
+    name = ros.node_name or _RSP
+    log = ros_console(logger_name(namespace, name))
+    settings: dict[str, Any] = {"publish_frequency": publish_frequency, "ignore_timestamp": ignore_timestamp,
+                                "frame_prefix": frame_prefix}
+    try:
+        values = node_params(ros, namespace, name)
+        for param, kind in (("publish_frequency", "double"), ("ignore_timestamp", "bool"),
+                            ("frame_prefix", "string")):
+            value = typed_param(values, param, kind)
+            if value is not None:
+                settings[param] = value
+        text = typed_param(values, "robot_description", "string")
+        warn_unused_params(values, lambda n: n in _RSP_PARAMS, log.warning, _RSP_WHY)
+    except RosArgsError as exc:
+        print(f"robotmodel robot-state-publisher: error: {exc}", file=sys.stderr)
+        return 2
+    check_publish_frequency(settings["publish_frequency"])
+    # As RSP before 3.5.1: the parameter is the robot; FILE is the fallback when it is empty.
+    desc: Any = str(text) if text else _load(file, mappings or {}, package_paths, untrusted)
+    if desc is None:
+        log.critical("robot_description parameter must not be empty")
+        return 1
+    stop = stop_on_signals()
+    # RSP's topics are relative (joint_states, robot_description): they follow the namespace; /tf does not.
+    with Node(name, namespace, connect=list(connect), remappings=ros.remaps) as node, RobotStatePublisher(
             desc, bus=node, logger=log, **settings):
         stop.wait()
     return 0

@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 from conftest import BUNDLED
-from robotmodel.cli.view_cmd import camera_spec
+from robotmodel.viewer import camera_spec
 from viewerhelpers import CAMERA, READY, project
 
 from robotmodel.errors import RobotModelError

@@ -1,0 +1,34 @@
+"""A command's robot source: a file path, or ``-`` for one XML document on stdin."""
+
+from __future__ import annotations
+
+import os
+import sys
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+
+from robotmodel.errors import URDFParseError
+from robotmodel.model._load import load
+from robotmodel.model._types import RobotDescription
+
+__all__ = ["load_source", "read_stdin_document"]
+
+
+def read_stdin_document() -> str:
+    """Read a whole XML document from stdin; empty or non-XML input is a URDFParseError."""
+    text = sys.stdin.read()
+    if not text.lstrip("\ufeff \t\r\n").startswith("<"):
+        raise URDFParseError("<stdin>: empty document or not XML")
+    return text
+
+
+def load_source(source: str | os.PathLike[str], args: Mapping[str, str] | None = None, *,
+                package_paths: Sequence[str | os.PathLike[str]] = (),
+                untrusted: bool = False) -> tuple[RobotDescription, Path]:
+    """:func:`robotmodel.load` a path, or stdin for ``-``; returns the robot and the folder its paths start from.
+
+    That folder is the file's, or the working directory for stdin (as check_urdf resolves them).
+    """
+    if str(source) == "-":
+        return load(read_stdin_document(), args, package_paths=package_paths, untrusted=untrusted), Path.cwd()
+    return load(source, args, package_paths=package_paths, untrusted=untrusted), Path(source).resolve().parent
