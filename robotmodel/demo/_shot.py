@@ -1,4 +1,4 @@
-"""``python -m robotmodel.cli._demo_shot URL OUT.png``: the demo's screenshot of the live viewer, as a child.
+"""``python -m robotmodel.demo._shot URL OUT.png``: the demo's screenshot of the live viewer, as a child.
 
 A process of its own, so the browser's start and the page's first complete frame overlap
 the demo's run instead of holding it up; the demo reaps it like every other child.

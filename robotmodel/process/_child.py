@@ -1,82 +1,117 @@
-"""The demo's child processes: one private bus, every line logged, all of them reaped on exit.
+"""One child process of a supervisor: how it is started, its output, its stop.
 
-Each child gets the demo's environment: its own rendezvous port and ``ROS_DOMAIN_ID``, and
-no zenoh configuration from the user's shell, so the demo neither joins nor disturbs
-another system. On Linux a child is also killed when the demo itself dies, so not even
-a ``kill -9`` of the demo leaves one running (children are started from the main thread:
-the kernel sends the signal when the thread that started a child ends).
+Every child we start is a Python module of the installed package, run as
+``python -P -c BOOT ...`` (:func:`module_argv`):
+
+- ``-P`` (Python 3.11's safe path) keeps the current directory off ``sys.path``: from a
+  clone's root, ``python -m robotmodel...`` would import the source folder ``robotmodel/``
+  (without ``cli/`` and ``robots/``, which only the install maps into it) instead of the
+  installed package. ``-P`` changes nothing else (unlike ``-I``, it keeps ``PYTHONPATH`` and
+  ``PYTHONUNBUFFERED``).
+- SIGINT is blocked while the child starts (the supervisor blocks it around the spawn, and
+  the mask survives exec), and BOOT's first act is to make SIGINT kill the process outright
+  (SIG_DFL) and unblock it: a Ctrl-C (or the supervisor's SIGINT) that lands while the child
+  is still importing ends it quietly, as a roslaunch child ends, instead of printing a
+  ``KeyboardInterrupt`` traceback; a command then installs its own clean-stop handlers
+  (:func:`robotmodel.signals.stop_on_signals`).
+- On Linux BOOT asks the kernel for a signal when the supervisor dies (PR_SET_PDEATHSIG),
+  so not even a ``kill -9`` of the supervisor leaves a child running (children are started
+  from the thread that lives as long as the supervisor: the kernel sends the signal when the
+  thread that started a child ends), and exits if the supervisor is already gone.
 """
 
 from __future__ import annotations
 
+import contextlib
 import os
-import random
 import re
 import signal
-import socket
 import subprocess
 import sys
 import threading
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator, Mapping
 from pathlib import Path
 
-__all__ = ["Child", "Children", "private_bus_env"]
+__all__ = ["Child", "command_argv", "module_argv"]
 
-# Sets PR_SET_PDEATHSIG (1) to SIGKILL, exits if the demo is already gone, then becomes the
-# child proper: the setting survives exec. (A preexec_fn would do the same in the forked
-# child, but is unsafe while the demo's reader threads run.) SIGKILL, not SIGTERM: this is
-# the path for a demo that could not clean up, and a child busy shutting down its bus
-# session when all its peers vanish at once may not act on a SIGTERM; the recording keeps
-# every chunk flushed so far either way.
-_LAUNCHER = (
-    "import ctypes, os, signal, sys\n"
-    "ctypes.CDLL(None).prctl(1, signal.SIGKILL)\n"
-    "if os.getppid() != int(sys.argv[1]): sys.exit(1)\n"
-    "os.execv(sys.argv[2], sys.argv[2:])\n"
+_BOOT = (
+    "import os, signal, sys\n"
+    "signal.signal(signal.SIGINT, signal.SIG_DFL)\n"
+    "signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})\n"
+    "if sys.platform == 'linux' and int(sys.argv[1]):\n"
+    "    import ctypes\n"
+    "    ctypes.CDLL(None).prctl(1, int(sys.argv[1]))\n"
+    "    if os.getppid() != int(sys.argv[2]): sys.exit(1)\n"
+    "import runpy\n"
+    "module = sys.argv[3]\n"
+    "del sys.argv[1:4]\n"
+    "runpy.run_module(module, run_name='__main__', alter_sys=True)\n"
 )
 
-
-def private_bus_env() -> dict[str, str]:
-    """The current environment with a free loopback rendezvous port, a random domain and no zenoh config."""
-    env = dict(os.environ)
-    for key in ("ZENOH_SESSION_CONFIG_URI", "ZENOH_ROUTER_CONFIG_URI", "ZENOH_CONFIG_OVERRIDE"):
-        env.pop(key, None)
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        env["ROBOTMODEL_ZENOH_PORT"] = str(s.getsockname()[1])
-    # Clear of 0, the domain a developer's own ROS 2 system is most likely on.
-    env["ROS_DOMAIN_ID"] = str(random.randint(120, 200))
-    env["PYTHONUNBUFFERED"] = "1"
-    return env
+#: The module the ``robotmodel`` console script runs.
+COMMAND_MODULE = "robotmodel.cli.main"
 
 
-def _launch(argv: list[str]) -> list[str]:
-    """``argv`` behind the launcher on Linux; elsewhere the demo's own cleanup must do."""
-    if sys.platform != "linux":
-        return argv
-    return [sys.executable, "-c", _LAUNCHER, str(os.getpid()), *argv]
+def module_argv(module: str, *args: str, orphan_signal: int = signal.SIGTERM) -> list[str]:
+    """``python -m MODULE ARGS`` for a child of this process, loading the installed package whatever the cwd.
+
+    ``orphan_signal`` is the signal the child gets if this process dies (Linux; 0: none).
+    """
+    return [sys.executable, "-P", "-c", _BOOT, str(int(orphan_signal)), str(os.getpid()), module, *args]
+
+
+def command_argv(*words: str, orphan_signal: int = signal.SIGTERM) -> list[str]:
+    """``robotmodel WORDS`` as a child of this process (see :func:`module_argv`)."""
+    return module_argv(COMMAND_MODULE, *words, orphan_signal=orphan_signal)
+
+
+@contextlib.contextmanager
+def _sigint_blocked() -> Iterator[None]:
+    # The calling thread's mask is what the child inherits; the process's other threads still take SIGINT.
+    old = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, old)
 
 
 class Child:
-    """One process; its stdout and stderr lines go to a log file and are kept for :meth:`wait_line`."""
+    """One process; with a ``log`` its stdout and stderr lines go there and are kept for :meth:`wait_line`.
 
-    def __init__(self, name: str, argv: list[str], env: dict[str, str], log: Path,
-                 on_line: Callable[[str], None] | None = None) -> None:
+    Without a log the child writes to this process's stdout and stderr (as roslaunch's
+    children do). ``new_session`` puts it in a session of its own, out of reach of the
+    terminal's Ctrl-C, so the supervisor alone decides when and in which order it stops.
+    """
+
+    def __init__(self, name: str, argv: list[str], *, env: Mapping[str, str] | None = None, log: Path | None = None,
+                 on_line: Callable[[str], None] | None = None, new_session: bool = False) -> None:
         self.name = name
         self.lines: list[str] = []
         self._cond = threading.Condition()
         self._on_line = on_line
-        self._log = log.open("w", encoding="utf-8")
-        # A session of its own: Ctrl-C in the terminal reaches the demo, which stops the
-        # children in order (the recorder last, so it keeps everything up to the end).
-        self.popen = subprocess.Popen(_launch(argv), env=env, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
-                                      stderr=subprocess.STDOUT, text=True, bufsize=1, start_new_session=True)
-        self._reader = threading.Thread(target=self._read, name=f"demo-{name}", daemon=True)
-        self._reader.start()
+        self._log = log.open("w", encoding="utf-8") if log is not None else None
+        piped = subprocess.PIPE if log is not None else None
+        with _sigint_blocked():
+            self.popen = subprocess.Popen(argv, env=None if env is None else dict(env), stdin=subprocess.DEVNULL,
+                                          stdout=piped, stderr=subprocess.STDOUT if piped else None, text=True,
+                                          bufsize=1, start_new_session=new_session)
+        self._reader: threading.Thread | None = None
+        if self._log is not None:
+            self._reader = threading.Thread(target=self._read, name=f"child-{name}", daemon=True)
+            self._reader.start()
+
+    @property
+    def pid(self) -> int:
+        """The child's process id."""
+        return self.popen.pid
+
+    def poll(self) -> int | None:
+        """The exit code once the child has ended (negative: killed by that signal), else None."""
+        return self.popen.poll()
 
     def _read(self) -> None:
-        assert self.popen.stdout is not None
+        assert self.popen.stdout is not None and self._log is not None
         for raw in self.popen.stdout:
             line = raw.rstrip("\n")
             self._log.write(raw)
@@ -88,7 +123,7 @@ class Child:
                 self._on_line(line)
 
     def wait_line(self, pattern: str, timeout: float) -> re.Match[str] | None:
-        """The first line matching ``pattern``, waiting up to ``timeout`` seconds (None if not seen)."""
+        """The first logged line matching ``pattern``, waiting up to ``timeout`` seconds (None if not seen)."""
         rx = re.compile(pattern)
         deadline = time.monotonic() + timeout
         seen = 0
@@ -104,52 +139,19 @@ class Child:
                     return None
                 self._cond.wait(min(left, 0.2))
 
-    def stop(self, timeout: float = 10.0) -> int:
-        """SIGINT (a ROS tool's clean stop), then SIGKILL after ``timeout``; returns the exit code."""
+    def signal(self, signum: int) -> None:
+        """Send ``signum`` if the child is still running."""
         if self.popen.poll() is None:
-            self.popen.send_signal(signal.SIGINT)
-        try:
-            code = self.popen.wait(timeout)
-        except subprocess.TimeoutExpired:
+            with contextlib.suppress(ProcessLookupError):
+                self.popen.send_signal(signum)
+
+    def reap(self) -> int:
+        """Kill the child if it still runs, wait for it and its output; returns its exit code."""
+        if self.popen.poll() is None:
             self.popen.kill()
-            code = self.popen.wait()
-        self._reader.join(5)
-        self._log.close()
+        code = self.popen.wait()
+        if self._reader is not None:
+            self._reader.join(5)
+        if self._log is not None:
+            self._log.close()
         return code
-
-
-class Children:
-    """The demo's processes, stopped in reverse start order with ``last`` ones at the very end."""
-
-    def __init__(self, env: dict[str, str], logs: Path) -> None:
-        self.env = env
-        self.logs = logs
-        self.started: list[Child] = []
-
-    def start(self, name: str, argv: list[str], on_line: Callable[[str], None] | None = None) -> Child:
-        """Start ``argv`` as child ``name`` (its output in ``logs/NAME.log``)."""
-        child = Child(name, argv, self.env, self.logs / f"{name}.log", on_line)
-        self.started.append(child)
-        return child
-
-    def robotmodel(self, command: str, *args: str, on_line: Callable[[str], None] | None = None) -> Child:
-        """``robotmodel COMMAND ARGS`` run by this interpreter (the child is named after COMMAND)."""
-        return self.start(command, [sys.executable, "-m", "robotmodel.cli.main", command, *args], on_line)
-
-    def example(self, name: str, *args: str) -> Child:
-        """``python -m robotmodel.examples.NAME ARGS``."""
-        return self.start(name, [sys.executable, "-m", f"robotmodel.examples.{name}", *args])
-
-    def stop_all(self, last: tuple[str, ...] = ()) -> dict[str, int]:
-        """Stop every child (those named in ``last`` after the others); their exit codes by name."""
-        order = [c for c in reversed(self.started) if c.name not in last]
-        order += [c for c in self.started if c.name in last]
-        codes: dict[str, int] = {}
-        # Signal the first group together, so the whole stop takes one child's time, not the sum.
-        first = [c for c in order if c.name not in last]
-        for child in first:
-            if child.popen.poll() is None:
-                child.popen.send_signal(signal.SIGINT)
-        for child in order:
-            codes[child.name] = child.stop()
-        return codes

@@ -6,11 +6,11 @@ import json
 import logging
 import os
 import subprocess
-import sys
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 
 from robotmodel.errors import PackageNotFoundError, ResourceError, UntrustedInputError, XacroError
+from robotmodel.process import module_argv
 from robotmodel.resources import PathLike, record_package
 
 __all__ = ["DEFAULT_MEMORY_BYTES", "DEFAULT_TIMEOUT_S", "dependencies", "expand", "expand_string"]
@@ -123,8 +123,9 @@ def _run(
         cwd=os.getcwd(),
     )
     try:
+        # module_argv: the installed package whatever the cwd (python -P), quiet on Ctrl-C.
         proc = subprocess.run(
-            [sys.executable, "-m", "robotmodel.xacro._worker"],
+            module_argv("robotmodel.xacro._worker", orphan_signal=0),
             input=json.dumps(request),
             capture_output=True,
             text=True,
