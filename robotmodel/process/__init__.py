@@ -6,8 +6,8 @@
 - :class:`Child`: one of them, with its logged lines (:meth:`Child.wait_line`).
 - :func:`module_argv` / :func:`command_argv`: how a child runs a module of the *installed*
   package whatever the current directory (``python -P``), dies quietly on an early SIGINT,
-  and follows its supervisor when it dies (Linux). Any process of ours that starts Python
-  children builds their command lines here.
+  and follows its supervisor when it dies (Linux); :func:`spawn` starts one with SIGINT held
+  until it can take it. Any process of ours that starts Python children starts them here.
 
 Usage::
 
@@ -24,7 +24,7 @@ Usage::
 
 from __future__ import annotations
 
-from robotmodel.process._child import Child, command_argv, module_argv
+from robotmodel.process._child import Child, command_argv, module_argv, spawn
 from robotmodel.process._supervisor import Supervisor
 
-__all__ = ["Child", "Supervisor", "command_argv", "module_argv"]
+__all__ = ["Child", "Supervisor", "command_argv", "module_argv", "spawn"]

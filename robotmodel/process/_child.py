@@ -32,8 +32,9 @@ import threading
 import time
 from collections.abc import Callable, Iterator, Mapping
 from pathlib import Path
+from typing import Any
 
-__all__ = ["Child", "command_argv", "module_argv"]
+__all__ = ["Child", "command_argv", "module_argv", "spawn"]
 
 _BOOT = (
     "import os, signal, sys\n"
@@ -76,6 +77,16 @@ def _sigint_blocked() -> Iterator[None]:
         signal.pthread_sigmask(signal.SIG_SETMASK, old)
 
 
+def spawn(argv: list[str], **popen: Any) -> subprocess.Popen[Any]:
+    """``subprocess.Popen(argv, **popen)`` with SIGINT blocked in the child until its BOOT takes it.
+
+    For an argv from :func:`module_argv`: a Ctrl-C that reaches the child while Python
+    starts (before any code of ours could run) then waits for BOOT, which ends the child quietly.
+    """
+    with _sigint_blocked():
+        return subprocess.Popen(argv, **popen)
+
+
 class Child:
     """One process; with a ``log`` its stdout and stderr lines go there and are kept for :meth:`wait_line`.
 
@@ -92,10 +103,9 @@ class Child:
         self._on_line = on_line
         self._log = log.open("w", encoding="utf-8") if log is not None else None
         piped = subprocess.PIPE if log is not None else None
-        with _sigint_blocked():
-            self.popen = subprocess.Popen(argv, env=None if env is None else dict(env), stdin=subprocess.DEVNULL,
-                                          stdout=piped, stderr=subprocess.STDOUT if piped else None, text=True,
-                                          bufsize=1, start_new_session=new_session)
+        self.popen = spawn(argv, env=None if env is None else dict(env), stdin=subprocess.DEVNULL, stdout=piped,
+                           stderr=subprocess.STDOUT if piped else None, text=True, bufsize=1,
+                           start_new_session=new_session)
         self._reader: threading.Thread | None = None
         if self._log is not None:
             self._reader = threading.Thread(target=self._read, name=f"child-{name}", daemon=True)

@@ -91,7 +91,8 @@ class Supervisor:
                 if code == 0:
                     self.say(f"[{child.name}] process has finished cleanly")
                 else:
-                    failed = True
+                    # Killed by a SIGINT (a terminal's Ctrl-C reaches the group): a stop, not a failure.
+                    failed = failed or code != -signal.SIGINT
                     self.say(f"[{child.name}] process has died [pid {child.pid}, exit code {code}]")
                 if child.name in self.required:
                     self.say(f"[{child.name}] required process has exited, shutting down")
