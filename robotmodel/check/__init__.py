@@ -8,6 +8,8 @@
   :class:`Location` in the URDF or xacro sources) into a picklable :class:`FileReport`.
 - :func:`workflow_command` / :func:`to_sarif`: findings as GitHub Actions annotations or
   a SARIF 2.1.0 log for code scanning.
+- :func:`run_check`: the ``check-urdf`` program over a :class:`CheckOptions` (files and
+  globs, config entries, fragments checked through their entries, parallel, four formats).
 - :func:`find_config` / :func:`read_config`: a robot repository's entry points and their
   xacro args (``[tool.robotmodel]`` or ``robotmodel.toml``); :func:`is_macro_only` tells the
   xacro fragments that are checked through the entries including them.
@@ -15,6 +17,7 @@
 
 from __future__ import annotations
 
+from robotmodel.check._command import FORMATS, CheckOptions, run_check
 from robotmodel.check._github import escape_data, escape_property, workflow_command
 from robotmodel.check._lint import Finding, Severity, lint
 from robotmodel.check._locations import Location, SourceIndex, display_path
@@ -26,9 +29,11 @@ from robotmodel.check._sarif import SARIF_SCHEMA, to_sarif
 
 __all__ = [
     "CONFIG_NAMES",
+    "FORMATS",
     "RULES",
     "SARIF_SCHEMA",
     "CheckJob",
+    "CheckOptions",
     "Entry",
     "FileReport",
     "Finding",
@@ -49,6 +54,7 @@ __all__ = [
     "job_args",
     "lint",
     "read_config",
+    "run_check",
     "to_graphviz",
     "to_sarif",
     "tree_report",

@@ -1,58 +1,51 @@
-"""``robotmodel check-urdf`` (alias ``check_urdf``): urdfdom's check_urdf, plus lint, for one file or many."""
+"""``check-urdf FILE...`` as a program: configs, globs and fragments planned, checks run in parallel, four formats.
+
+:func:`run_check` takes a :class:`CheckOptions` (the command's options by name) and returns
+the exit code: 0 when every check passes (and, with ``strict``, warning-free). Output is
+check_urdf's for one file; see :mod:`robotmodel.check._output` for the formats and
+:mod:`robotmodel.check._plan` for which checks run.
+"""
 
 from __future__ import annotations
 
-import argparse
 import json
 import os
 import sys
-from typing import TYPE_CHECKING, Any
-
-from robotmodel.cli._common import add_mapping_arguments, add_model_options
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any, NoReturn
 
 if TYPE_CHECKING:
-    from collections.abc import Iterator, Sequence
-
     from robotmodel.check import CheckJob, FileReport, ProjectConfig
+
+__all__ = ["FORMATS", "CheckOptions", "run_check"]
 
 FORMATS = ("text", "json", "github", "sarif")
 
 
-def register(sub: Any) -> None:
-    """Add the ``check-urdf`` subcommand."""
-    parser: argparse.ArgumentParser = sub.add_parser(
-        "check-urdf", aliases=["check_urdf"],
-        help="parse and check URDF/xacro files; prints the tree as urdfdom's check_urdf does",
-        description="Check URDF (or xacro) files ('-' reads stdin). For one file, on success stdout is "
-        "exactly check_urdf's and lint warnings follow on stderr; on failure stdout is empty, one line per "
-        "problem goes to stderr and the exit code is 1 (urdfdom exits 255). Beyond urdfdom it rejects "
-        "partial cycles, links with two parents, self-joints, zero axes, NaN/inf and mimics of "
-        "missing joints. Several files (and globs, ** included) are checked in parallel and end with a "
-        "summary line on stderr; the exit code is 1 if any fails. A robotmodel.toml or [tool.robotmodel] "
-        "in pyproject.toml names entry points and their xacro args; macro-only xacro files are checked "
-        "through the entries that include them, and without FILE every entry is checked.",
-    )
-    add_mapping_arguments(parser)
-    parser.add_argument("files", metavar="FILE", nargs="*",
-                        help="a .urdf or .xacro file or glob ('-' reads stdin)")
-    add_model_options(parser)
-    parser.add_argument("--strict", action="store_true", help="treat lint warnings as errors")
-    parser.add_argument(
-        "--format", choices=FORMATS, default="text",
-        help="json: robot, root, tree and findings (with codes and places); github: workflow commands "
-        "(annotations on the pull request); sarif: a SARIF 2.1.0 log for code scanning",
-    )
-    parser.add_argument("--config", metavar="PATH",
-                        help="the project config (default: robotmodel.toml or a pyproject.toml with "
-                        "[tool.robotmodel], searched upward from the working directory)")
-    parser.add_argument("--no-config", action="store_true", help="ignore any project config")
-    parser.add_argument("-j", "--jobs", type=int, default=0, metavar="N",
-                        help="check N files at once (default: one per CPU core)")
-    # Kept so errors found after parsing (no FILE, '-' among files) print this command's usage too.
-    parser.set_defaults(func=run, parser=parser)
+@dataclass
+class CheckOptions:
+    """What ``check-urdf`` is asked for; field names are its options'. ``command`` names it in messages."""
+
+    files: Sequence[str] = ()
+    mappings: Mapping[str, str] = field(default_factory=dict)
+    package_path: Sequence[str] = ()
+    untrusted: bool = False
+    strict: bool = False
+    format: str = "text"
+    config: str | None = None
+    no_config: bool = False
+    jobs: int = 0
+    command: str = "check-urdf"
 
 
-def _config(args: argparse.Namespace) -> ProjectConfig | None:
+def _usage_error(message: str) -> NoReturn:
+    from robotmodel.errors import RobotModelError
+
+    raise RobotModelError(message)
+
+
+def _config(args: CheckOptions) -> ProjectConfig | None:
     from robotmodel.check import find_config, read_config
 
     if args.no_config:
@@ -62,10 +55,8 @@ def _config(args: argparse.Namespace) -> ProjectConfig | None:
     return find_config()
 
 
-def _stdin_report(args: argparse.Namespace) -> FileReport:
+def _stdin_report(args: CheckOptions) -> FileReport:
     """The old single-document path: stdin parsed in-process, relative paths from the working directory."""
-    from robotmodel.cli._common import load_description
-
     from robotmodel.check import (
         CheckJob,
         FileReport,
@@ -79,12 +70,12 @@ def _stdin_report(args: argparse.Namespace) -> FileReport:
         tree_report,
     )
     from robotmodel.errors import RobotModelError
+    from robotmodel.model import load_source
 
     job = CheckJob("-", strict=args.strict)
-    args.file = "-"
     here = Location("-", None)
     try:
-        desc, base_dir = load_description(args)
+        desc, base_dir = load_source("-", args.mappings, package_paths=args.package_path, untrusted=args.untrusted)
     except RobotModelError as exc:
         message = " ".join(str(exc).splitlines())
         return FileReport(job, (LocatedFinding(Finding(error_code(exc), Severity.ERROR, "-", message), here),),
@@ -98,7 +89,7 @@ def _stdin_report(args: argparse.Namespace) -> FileReport:
                       tree_text=tree_report(desc))
 
 
-def _workers(args: argparse.Namespace, n: int) -> int:
+def _workers(args: CheckOptions, n: int) -> int:
     return max(1, min(n, args.jobs if args.jobs > 0 else (os.cpu_count() or 1)))
 
 
@@ -138,22 +129,23 @@ def _orphan(file: str, strict: bool) -> FileReport:
                       robot="", tree_text="")
 
 
-def run(args: argparse.Namespace) -> int:
-    """Check the files; exit 0 when all are valid (and, with --strict, warning-free)."""
-    from robotmodel.cli._check_plan import expand_files, plan_checks
-    from robotmodel.cli._common import apply_verbose
+def run_check(args: CheckOptions, usage_error: Callable[[str], NoReturn] = _usage_error) -> int:
+    """Check the files; returns 0 when all are valid (and, with ``strict``, warning-free), else 1.
 
+    ``usage_error`` hears of a bad command line ('-' among other files; no FILE and no
+    configured entry) and must not return (the command prints its usage and exits 2).
+    """
     from robotmodel.check import CheckJob, check_file
+    from robotmodel.check._plan import expand_files, plan_checks
 
-    apply_verbose(args)
-    if args.files == ["-"]:
+    if list(args.files) == ["-"]:
         reports = iter([_stdin_report(args)])
         return _emit(args, reports, [], many=False)
     if "-" in args.files:
-        args.parser.error("'-' (stdin) cannot be combined with other files")
+        usage_error("'-' (stdin) cannot be combined with other files")
     config = _config(args)
     if not args.files and (config is None or not config.entries):
-        args.parser.error("the following arguments are required: FILE")
+        usage_error("the following arguments are required: FILE")
     package_paths = [*args.package_path, *((str(p) for p in config.package_paths) if config else ())]
     base = CheckJob("", package_paths=tuple(package_paths), untrusted=args.untrusted, strict=args.strict,
                     locate=args.format != "text")
@@ -163,13 +155,13 @@ def run(args: argparse.Namespace) -> int:
         lambda entry_jobs: list(_map(_includes_of, entry_jobs, _workers(args, len(entry_jobs)))))
     unchecked = [_orphan(f, args.strict) for f in orphans]
     # One FILE checked once prints exactly what check-urdf always printed for it (no summary).
-    many = not (len(jobs) == 1 and not unchecked and len(args.files) == 1)
+    many = not (len(jobs) == 1 and not unchecked and len(list(args.files)) == 1)
     return _emit(args, _map(check_file, jobs, _workers(args, len(jobs))), unchecked, many=many)
 
 
-def _emit(args: argparse.Namespace, reports: Iterator[FileReport], unchecked: list[FileReport], *,
+def _emit(args: CheckOptions, reports: Iterator[FileReport], unchecked: list[FileReport], *,
           many: bool) -> int:
-    from robotmodel.cli._check_output import json_object, summary, text_lines
+    from robotmodel.check._output import json_object, summary, text_lines
 
     done: list[FileReport] = []
     if args.format == "text":
