@@ -1,4 +1,4 @@
-"""``robotmodel topic list|echo``: what is on the bus, as ``ros2 topic list`` and ``ros2 topic echo`` show it.
+"""``ros2 topic list`` and ``ros2 topic echo`` as programs: what is on the bus, as ros2cli shows it.
 
 ``echo`` prints each message as ros2's ``message_to_yaml`` does (fields in message order,
 arrays and strings cut after ``--truncate-length`` items with ``'...'``), each followed by
@@ -7,62 +7,20 @@ arrays and strings cut after ``--truncate-length`` items with ``'...'``), each f
 
 from __future__ import annotations
 
-import argparse
 import sys
 import threading
 import time
-from typing import Any
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, Any
 
-from robotmodel.cli._node_args import add_node_arguments
+if TYPE_CHECKING:
+    from robotmodel.rcl import RosArgs
 
-__all__ = ["message_to_yaml", "register"]
+__all__ = ["DEFAULT_SPIN_TIME", "DEFAULT_TRUNCATE_LENGTH", "message_to_yaml", "run_topic_echo", "run_topic_list"]
 
 DEFAULT_TRUNCATE_LENGTH = 128
 # ros2cli's direct node spins this long to discover the graph before answering.
 DEFAULT_SPIN_TIME = 0.5
-
-
-def _add_bus_options(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--connect", action="append", default=[], metavar="ENDPOINT",
-                        help="zenoh endpoint to connect to instead of the local rendezvous (repeatable)")
-    parser.add_argument("--spin-time", type=float, default=DEFAULT_SPIN_TIME, metavar="S",
-                        help=f"seconds to wait for discovery (default {DEFAULT_SPIN_TIME})")
-
-
-def register(sub: Any) -> None:
-    """Add the ``topic`` subcommand with its ``list`` and ``echo`` verbs."""
-    parser: argparse.ArgumentParser = sub.add_parser(
-        "topic", help="list the topics on the bus, or print the messages of one (as ros2 topic)",
-        description="Inspect the ROS 2 graph on the zenoh bus (rmw_zenoh's wire format).")
-    verbs = parser.add_subparsers(dest="verb", metavar="VERB")
-    verbs.required = True
-
-    lst = verbs.add_parser("list", help="output a list of available topics",
-                           description="Output a list of available topics.")
-    lst.add_argument("-t", "--show-types", action="store_true", help="additionally show the topic type")
-    lst.add_argument("-c", "--count-topics", action="store_true", help="only display the number of topics")
-    lst.add_argument("--include-hidden-topics", action="store_true", help="consider hidden topics as well")
-    _add_bus_options(lst)
-    lst.set_defaults(func=run_list)
-
-    echo = verbs.add_parser("echo", help="output messages from a topic",
-                            description="Output messages from a topic.")
-    echo.add_argument("topic_name", help="name of the ROS topic to listen to (e.g. '/chatter')")
-    echo.add_argument("message_type", nargs="?", help="type of the ROS message (e.g. 'std_msgs/msg/String')")
-    echo.add_argument("--field", default=None,
-                      help="echo a selected field of a message; use '.' to select sub-fields")
-    echo.add_argument("--full-length", "-f", action="store_true",
-                      help="output all elements of arrays, bytes and strings longer than --truncate-length")
-    echo.add_argument("--truncate-length", "-l", type=int, default=DEFAULT_TRUNCATE_LENGTH,
-                      help=f"the length to truncate arrays, bytes and strings to (default: {DEFAULT_TRUNCATE_LENGTH})")
-    echo.add_argument("--flow-style", action="store_true", help="print collections in the flow style")
-    echo.add_argument("--raw", action="store_true", help="echo the raw binary representation")
-    echo.add_argument("--once", action="store_true", help="print the first message received and then exit")
-    echo.add_argument("--timeout", type=float, metavar="N", default=None,
-                      help="set a timeout in seconds for waiting")
-    _add_bus_options(echo)
-    add_node_arguments(echo, "_robotmodel_topic_echo")  # a relative TOPIC_NAME resolves under --namespace
-    echo.set_defaults(func=run_echo)
 
 
 def _hidden(name: str) -> bool:
@@ -81,18 +39,19 @@ def _discover(node: Any, spin_time: float) -> list[tuple[str, list[str]]]:
     return list(node.get_topic_names_and_types())
 
 
-def run_list(args: argparse.Namespace) -> int:
-    """Print the topics (and types) of the domain, sorted."""
+def run_topic_list(*, show_types: bool = False, count_topics: bool = False, include_hidden_topics: bool = False,
+                   connect: Sequence[str] = (), spin_time: float = DEFAULT_SPIN_TIME) -> int:
+    """``ros2 topic list``: print the topics (and types) of the domain, sorted; returns the exit code."""
     from robotmodel.bus import Node
 
-    with Node("_robotmodel_topic_list", connect=args.connect) as node:
-        topics = _discover(node, args.spin_time)
-    topics = [(n, t) for n, t in topics if args.include_hidden_topics or not _hidden(n)]
-    if args.count_topics:
+    with Node("_robotmodel_topic_list", connect=list(connect)) as node:
+        topics = _discover(node, spin_time)
+    topics = [(n, t) for n, t in topics if include_hidden_topics or not _hidden(n)]
+    if count_topics:
         print(len(topics))
         return 0
     for name, types in topics:
-        print(f"{name} [{', '.join(types)}]" if args.show_types else name)
+        print(f"{name} [{', '.join(types)}]" if show_types else name)
     return 0
 
 
@@ -137,39 +96,49 @@ def _echo_qos(node: Any, topic: str) -> Any:
                Durability.TRANSIENT_LOCAL if latched else Durability.VOLATILE)
 
 
-def run_echo(args: argparse.Namespace) -> int:
-    """Subscribe to the topic and print each message until Ctrl-C, --once or --timeout."""
+def run_topic_echo(topic_name: str, message_type: str | None = None, *, field: str | None = None,
+                   full_length: bool = False, truncate_length: int = DEFAULT_TRUNCATE_LENGTH,
+                   flow_style: bool = False, raw: bool = False, once: bool = False, timeout: float | None = None,
+                   connect: Sequence[str] = (), spin_time: float = DEFAULT_SPIN_TIME, namespace: str = "/",
+                   ros: RosArgs | None = None) -> int:
+    """``ros2 topic echo``: print each message until SIGINT/SIGTERM, ``once`` or ``timeout``; the exit code.
+
+    The type comes from the graph unless ``message_type`` is given; ``field`` picks a
+    sub-field (``a.b``); a relative ``topic_name`` resolves under ``namespace``.
+    """
     from robotmodel.bus import Node
     from robotmodel.errors import BusError
+    from robotmodel.rcl import RosArgs
     from robotmodel.signals import stop_on_signals
 
+    ros = ros or RosArgs()
     fields = None
-    if args.field is not None:
-        fields = [f for f in args.field.split(".") if f]
+    if field is not None:
+        fields = [f for f in field.split(".") if f]
         if not fields:
-            raise BusError(f"Invalid field value '{args.field}'")
-    limit = None if args.full_length else args.truncate_length
+            raise BusError(f"Invalid field value '{field}'")
+    limit = None if full_length else truncate_length
     stop = stop_on_signals()
     lock = threading.Lock()
     problems: list[str] = []
 
     from robotmodel.rcl import warn_ignored_params
 
-    warn_ignored_params(args.ros, args.namespace, args.node_name or "_robotmodel_topic_echo")
-    with Node(args.node_name or "_robotmodel_topic_echo", args.namespace, connect=args.connect,
-              remappings=args.ros.remaps) as node:
-        topic = node.resolve_topic_name(args.topic_name)
-        typename = args.message_type
+    name = ros.node_name or "_robotmodel_topic_echo"
+    warn_ignored_params(ros, namespace, name)
+    with Node(name, namespace, connect=list(connect), remappings=ros.remaps) as node:
+        topic = node.resolve_topic_name(topic_name)
+        typename = message_type
         # Discovery first, type given or not: the QoS follows the publishers, and a new session's
         # graph does not show them yet, so an echo of a latched topic would subscribe volatile
         # and miss the one latched message.
-        found = dict(_discover(node, args.spin_time))
+        found = dict(_discover(node, spin_time))
         if typename is None:
             if topic not in found:
-                print(f"WARNING: topic [{args.topic_name}] does not appear to be published yet", flush=True)
+                print(f"WARNING: topic [{topic_name}] does not appear to be published yet", flush=True)
                 raise BusError("Could not determine the type for the passed topic")
             if len(found[topic]) > 1:
-                raise BusError(f"Cannot echo topic '{args.topic_name}', as it contains more than one type: "
+                raise BusError(f"Cannot echo topic '{topic_name}', as it contains more than one type: "
                                f"[{', '.join(found[topic])}]")
             typename = found[topic][0]
         qos = _echo_qos(node, topic)
@@ -177,8 +146,8 @@ def run_echo(args: argparse.Namespace) -> int:
         def on_message(msg: Any) -> None:
             if stop.is_set():
                 return
-            sub = msg.payload if args.raw else msg
-            if fields is not None and not args.raw:
+            sub = msg.payload if raw else msg
+            if fields is not None and not raw:
                 for name in fields:
                     if not hasattr(sub, name):
                         problems.append(f"Invalid field '{'.'.join(fields)}': "
@@ -187,15 +156,15 @@ def run_echo(args: argparse.Namespace) -> int:
                         return
                     sub = getattr(sub, name)
             with lock:
-                if args.raw:
+                if raw:
                     print(sub, end="\n---\n", flush=True)
                 else:
-                    print(message_to_yaml(sub, limit, args.flow_style), end="---\n", flush=True)
-                if args.once:
+                    print(message_to_yaml(sub, limit, flow_style), end="---\n", flush=True)
+                if once:
                     stop.set()
 
         try:
-            if args.raw:
+            if raw:
                 node.create_subscription(typename, topic, on_message, qos, raw=True)
             else:
                 node.create_subscription(typename, topic, on_message, qos)
@@ -203,7 +172,7 @@ def run_echo(args: argparse.Namespace) -> int:
             if "unknown message type" in str(exc):
                 raise BusError("The passed message type is invalid") from None
             raise
-        stop.wait(args.timeout)
+        stop.wait(timeout)
     if problems:
         raise BusError(problems[0])
     return 0

@@ -1,0 +1,79 @@
+"""``robotmodel topic list|echo``: what is on the bus, as ``ros2 topic list`` and ``ros2 topic echo`` show it.
+
+The programs are :func:`robotmodel.topic.run_topic_list` and :func:`robotmodel.topic.run_topic_echo`.
+"""
+
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+from robotmodel.cli._node_args import add_node_arguments
+
+__all__ = ["register"]
+
+# robotmodel.topic's defaults (not imported: --help stays light).
+_TRUNCATE_LENGTH = 128
+_SPIN_TIME = 0.5
+
+
+def _add_bus_options(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--connect", action="append", default=[], metavar="ENDPOINT",
+                        help="zenoh endpoint to connect to instead of the local rendezvous (repeatable)")
+    parser.add_argument("--spin-time", type=float, default=_SPIN_TIME, metavar="S",
+                        help=f"seconds to wait for discovery (default {_SPIN_TIME})")
+
+
+def register(sub: Any) -> None:
+    """Add the ``topic`` subcommand with its ``list`` and ``echo`` verbs."""
+    parser: argparse.ArgumentParser = sub.add_parser(
+        "topic", help="list the topics on the bus, or print the messages of one (as ros2 topic)",
+        description="Inspect the ROS 2 graph on the zenoh bus (rmw_zenoh's wire format).")
+    verbs = parser.add_subparsers(dest="verb", metavar="VERB")
+    verbs.required = True
+
+    lst = verbs.add_parser("list", help="output a list of available topics",
+                           description="Output a list of available topics.")
+    lst.add_argument("-t", "--show-types", action="store_true", help="additionally show the topic type")
+    lst.add_argument("-c", "--count-topics", action="store_true", help="only display the number of topics")
+    lst.add_argument("--include-hidden-topics", action="store_true", help="consider hidden topics as well")
+    _add_bus_options(lst)
+    lst.set_defaults(func=run_list)
+
+    echo = verbs.add_parser("echo", help="output messages from a topic",
+                            description="Output messages from a topic.")
+    echo.add_argument("topic_name", help="name of the ROS topic to listen to (e.g. '/chatter')")
+    echo.add_argument("message_type", nargs="?", help="type of the ROS message (e.g. 'std_msgs/msg/String')")
+    echo.add_argument("--field", default=None,
+                      help="echo a selected field of a message; use '.' to select sub-fields")
+    echo.add_argument("--full-length", "-f", action="store_true",
+                      help="output all elements of arrays, bytes and strings longer than --truncate-length")
+    echo.add_argument("--truncate-length", "-l", type=int, default=_TRUNCATE_LENGTH,
+                      help=f"the length to truncate arrays, bytes and strings to (default: {_TRUNCATE_LENGTH})")
+    echo.add_argument("--flow-style", action="store_true", help="print collections in the flow style")
+    echo.add_argument("--raw", action="store_true", help="echo the raw binary representation")
+    echo.add_argument("--once", action="store_true", help="print the first message received and then exit")
+    echo.add_argument("--timeout", type=float, metavar="N", default=None,
+                      help="set a timeout in seconds for waiting")
+    _add_bus_options(echo)
+    add_node_arguments(echo, "_robotmodel_topic_echo")  # a relative TOPIC_NAME resolves under --namespace
+    echo.set_defaults(func=run_echo)
+
+
+def run_list(args: argparse.Namespace) -> int:
+    """Print the topics."""
+    from robotmodel.topic import run_topic_list
+
+    return run_topic_list(show_types=args.show_types, count_topics=args.count_topics,
+                          include_hidden_topics=args.include_hidden_topics, connect=args.connect,
+                          spin_time=args.spin_time)
+
+
+def run_echo(args: argparse.Namespace) -> int:
+    """Print the topic's messages."""
+    from robotmodel.topic import run_topic_echo
+
+    return run_topic_echo(args.topic_name, args.message_type, field=args.field, full_length=args.full_length,
+                          truncate_length=args.truncate_length, flow_style=args.flow_style, raw=args.raw,
+                          once=args.once, timeout=args.timeout, connect=args.connect, spin_time=args.spin_time,
+                          namespace=args.namespace, ros=args.ros)
