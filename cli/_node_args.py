@@ -10,7 +10,7 @@ __all__ = ["add_node_arguments", "settle"]
 
 
 def add_node_arguments(parser: argparse.ArgumentParser, node_name: str) -> None:
-    """Give a :class:`robotmodel.cli._common.CommandParser` ``--namespace`` and ``--ros-args`` blocks.
+    """Give a :class:`robotmodel.cli._parser.CommandParser` ``--namespace`` and ``--ros-args`` blocks.
 
     ``node_name`` is the node's default name (``node:``-prefixed rules for others are ignored).
     After parsing, ``args.namespace`` is the node's absolute namespace and ``args.node_name``

@@ -7,7 +7,7 @@ import json
 import math
 from typing import Any
 
-from robotmodel.cli._common import add_model_arguments, joint_values, load_description
+from robotmodel.cli._common import add_model_arguments, load_description
 
 
 def register(sub: Any) -> None:
@@ -28,11 +28,11 @@ def register(sub: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Compute and print the poses."""
-    from robotmodel.kinematics import KinematicModel, KinematicState
+    from robotmodel.kinematics import KinematicModel, KinematicState, parse_joint_words
 
     desc, _ = load_description(args)
     model = KinematicModel(desc)
-    state = KinematicState(model).update(joint_values(args.joint), clamp=args.clamp)
+    state = KinematicState(model).update(parse_joint_words(args.joint), clamp=args.clamp)
     links = [args.link] if args.link else list(model.link_names)
     # An unknown --link is the library's UnknownLinkError, as from every kinematics API.
     poses = {name: state.link_pose(name) for name in links}

@@ -11,7 +11,7 @@ import argparse
 import sys
 from typing import Any
 
-from robotmodel.cli._common import add_model_arguments, apply_verbose, read_stdin_document, write_atomic
+from robotmodel.cli._common import add_model_arguments, apply_verbose
 
 VERBOSITY_HELP = (
     "set verbosity level: 0 quiet, suppressing warnings; 1 default, warnings and error locations; "
@@ -43,6 +43,8 @@ def register(sub: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Expand and print or write the result."""
+    from robotmodel._atomic import write_atomic
+    from robotmodel.model import read_stdin_document
     from robotmodel.xacro import dependencies, expand, expand_string
 
     apply_verbose(args)

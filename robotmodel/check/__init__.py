@@ -1,7 +1,8 @@
 """Checking robot descriptions: urdfdom's check_urdf and urdf_to_graphviz output, plus lint.
 
 - :func:`tree_report`: the exact stdout of ``check_urdf`` for a valid robot.
-- :func:`to_graphviz`: the exact ``.gv`` text of ``urdf_to_graphviz``.
+- :func:`to_graphviz`: the exact ``.gv`` text of ``urdf_to_graphviz`` (:func:`run_urdf_to_graphviz`
+  writes it and the PDF, as the program does).
 - :func:`lint`: physical and referential findings (inertia, limits, meshes, materials),
   each a :class:`Finding` with a stable ``code``; :data:`RULES` says what each code means.
 - :func:`check_file`: one file end to end (load, lint, each finding placed at a
@@ -19,6 +20,7 @@ from __future__ import annotations
 
 from robotmodel.check._command import FORMATS, CheckOptions, run_check
 from robotmodel.check._github import escape_data, escape_property, workflow_command
+from robotmodel.check._graphviz import run_urdf_to_graphviz
 from robotmodel.check._lint import Finding, Severity, lint
 from robotmodel.check._locations import Location, SourceIndex, display_path
 from robotmodel.check._project import CONFIG_NAMES, Entry, ProjectConfig, find_config, is_macro_only, read_config
@@ -55,6 +57,7 @@ __all__ = [
     "lint",
     "read_config",
     "run_check",
+    "run_urdf_to_graphviz",
     "to_graphviz",
     "to_sarif",
     "tree_report",

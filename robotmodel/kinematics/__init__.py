@@ -7,7 +7,7 @@
   size) and Jacobians (Pinocchio, while its Data stays under :data:`PINOCCHIO_DATA_LIMIT`).
 - :func:`joint_transforms` / :func:`static_transforms`: per-joint T_parent_child as RSP publishes.
 - :func:`batch_link_matrices`: N configurations at once, vectorized.
-- :func:`joint_values`: ``NAME=VALUE`` words (``--joint``) to a dict, with one-line errors.
+- :func:`parse_joint_words`: ``NAME=VALUE`` words (``--joint``) to a dict, with one-line errors.
 """
 
 from __future__ import annotations
@@ -22,7 +22,7 @@ from robotmodel.kinematics._publish import (
     static_transforms,
 )
 from robotmodel.kinematics._state import KinematicState
-from robotmodel.kinematics._words import joint_values
+from robotmodel.kinematics._words import parse_joint_words
 
 __all__ = [
     "PINOCCHIO_DATA_LIMIT",
@@ -34,6 +34,6 @@ __all__ = [
     "batch_link_matrices",
     "batch_link_poses",
     "joint_transforms",
-    "joint_values",
+    "parse_joint_words",
     "static_transforms",
 ]

@@ -6,10 +6,10 @@ from collections.abc import Iterable
 
 from robotmodel.errors import RobotModelError
 
-__all__ = ["joint_values"]
+__all__ = ["parse_joint_words"]
 
 
-def joint_values(words: Iterable[str]) -> dict[str, float]:
+def parse_joint_words(words: Iterable[str]) -> dict[str, float]:
     """``--joint NAME=VALUE`` words to a dict, with one-line errors."""
     values: dict[str, float] = {}
     for word in words:

@@ -41,6 +41,7 @@ from robotmodel.rcl._console import log_line, ros_console, ros_log
 from robotmodel.rcl._params import (
     ParamEntry,
     ParamValue,
+    is_param_name,
     param_file_entries,
     param_rule_entry,
     param_type_name,
@@ -54,6 +55,7 @@ __all__ = [
     "ParamValue",
     "RosArgs",
     "RosArgsError",
+    "is_param_name",
     "log_line",
     "logger_name",
     "node_namespace",

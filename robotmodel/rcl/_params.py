@@ -30,6 +30,7 @@ from robotmodel.errors import RosArgsError
 __all__ = [
     "ParamEntry",
     "ParamValue",
+    "is_param_name",
     "param_file_entries",
     "param_rule_entry",
     "param_type_name",
@@ -143,6 +144,11 @@ class _Events:
         if not quoted and not event.value and event.tag is None:
             raise ValueError(f"No value at line {event.start_mark.line + 1}")
         return _scalar(event.value, quoted, event.tag in ("tag:yaml.org,2002:str", "!!str"))
+
+
+def is_param_name(name: str) -> bool:
+    """Whether rcl accepts ``name`` as a parameter name (tokens joined by dots: ``zeros.j1``)."""
+    return _PARAM_NAME.fullmatch(name) is not None
 
 
 def _node_and_name(flag: str, rule: str) -> tuple[str, str, str]:

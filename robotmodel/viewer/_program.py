@@ -14,7 +14,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from robotmodel.errors import RobotModelError, RosArgsError
-from robotmodel.kinematics import joint_values
+from robotmodel.kinematics import parse_joint_words
 from robotmodel.viewer._options import ViewOptions, build_viewer, camera_spec, frames_spec, size_spec
 
 if TYPE_CHECKING:
@@ -36,7 +36,7 @@ def run_view(options: ViewOptions) -> int:
     """Build the viewer, then write files or serve until SIGINT/SIGTERM; returns the exit code."""
     from robotmodel.viewer._live import serve_live
 
-    initial = joint_values(list(options.joint))
+    initial = parse_joint_words(list(options.joint))
     if options.track and not options.tf:
         raise RobotModelError("--track needs --tf (the frame's pose comes from /tf)")
     if options.camera is not None:
@@ -68,7 +68,7 @@ def run_joint_state_publisher_gui(options: ViewOptions) -> int:
     except RosArgsError as exc:
         print(f"robotmodel joint-state-publisher-gui: error: {exc}", file=sys.stderr)
         return 2
-    initial = joint_values(list(options.joint))
+    initial = parse_joint_words(list(options.joint))
     initial.update(settings.pop("zeros"))  # zeros.JOINT wins over --joint, as a parameter over its flag
     return serve_live(options, _load(options), initial, frames_spec(options.frames), publish=True,
                       jsp_options=settings)
