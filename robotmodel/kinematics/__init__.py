@@ -7,6 +7,7 @@
   size) and Jacobians (Pinocchio, while its Data stays under :data:`PINOCCHIO_DATA_LIMIT`).
 - :func:`joint_transforms` / :func:`static_transforms`: per-joint T_parent_child as RSP publishes.
 - :func:`batch_link_matrices`: N configurations at once, vectorized.
+- :func:`run_fk`: the ``fk`` command's report (every link's pose, text or JSON).
 - :func:`parse_joint_words`: ``NAME=VALUE`` words (``--joint``) to a dict, with one-line errors.
 """
 
@@ -21,6 +22,7 @@ from robotmodel.kinematics._publish import (
     joint_transforms,
     static_transforms,
 )
+from robotmodel.kinematics._report import run_fk
 from robotmodel.kinematics._state import KinematicState
 from robotmodel.kinematics._words import parse_joint_words
 
@@ -35,5 +37,6 @@ __all__ = [
     "batch_link_poses",
     "joint_transforms",
     "parse_joint_words",
+    "run_fk",
     "static_transforms",
 ]
