@@ -1,4 +1,4 @@
-"""ROS 2 arguments for every node-running command: ``--ros-args ... [--]`` blocks, read as rcl reads them.
+"""ROS 2 arguments for every node: ``--ros-args ... [--]`` blocks, read as rcl reads them.
 
 - ``-r``/``--remap`` rules, rcl's syntax and semantics (see :mod:`robotmodel.bus._remap`):
   ``__ns:=/ns`` (fully qualified) and ``__node:=name`` (or ``__name:=``) move and rename the
