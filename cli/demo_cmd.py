@@ -1,12 +1,6 @@
 """``robotmodel demo``: the whole pipeline on the bundled diffbot, every part a process on a private bus.
 
-Started and stopped here, nothing by hand: the recorder (MCAP), a static map → odom
-transform, robot_state_publisher and joint_state_publisher on the diffbot (from xacro),
-the odometry example (``robot_controller`` and ``sensor_simulator``, whose wheel angles
-reach joint_state_publisher through ``--source-list /wheel_states``), a live ``tf2_echo
-map base_footprint``, ``view_frames``, and the viewer following the robot, with a
-screenshot of it taken by headless Chromium when one is installed. After the run, one
-offline question is answered from the recording with ``tf2-echo --bag``.
+The program is :func:`robotmodel.demo.run_demo` (what runs, and how it is stopped, is written there).
 """
 
 from __future__ import annotations
@@ -15,15 +9,6 @@ import argparse
 from typing import Any
 
 __all__ = ["register", "run"]
-
-ROBOT = "diffbot.urdf.xacro"
-#: The recorded topics: TF, the robot, and the odometry example's own.
-TOPICS = ("/tf", "/tf_static", "/joint_states", "/robot_description", "/odom", "/cmd_vel")
-#: map → odom, as a localization node would publish it.
-MAP_TO_ODOM = ("1.0", "0.5", "0.0")
-#: The viewer's camera, in odom, before it follows base_link with this offset: above, behind and to
-#: the right of the robot as it sets off along x, close enough for the robot to fill the picture.
-VIEWER_CAMERA = "-0.6,-0.45,0.4:0,0,0"
 
 
 def register(sub: Any) -> None:
@@ -47,7 +32,7 @@ def register(sub: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Start everything, run for --duration (or until Ctrl-C), stop everything, report."""
-    from robotmodel.cli._demo_run import Demo
+    from robotmodel.demo import run_demo
 
-    code: int = Demo(args).run()
-    return code
+    return run_demo(duration=args.duration, output=args.output, browser=not args.no_browser,
+                    time_scale=args.time_scale)

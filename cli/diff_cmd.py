@@ -1,14 +1,14 @@
-"""``robotmodel diff``: what a change to a robot description changes, as ``diff`` reports files."""
+"""``robotmodel diff``: what a change to a robot description changes, as ``diff`` reports files.
+
+The program is :func:`robotmodel.diff.run_diff`.
+"""
 
 from __future__ import annotations
 
 import argparse
-import sys
 from typing import Any
 
-from robotmodel.cli._common import add_mapping_arguments, add_model_options, apply_verbose, load_description
-
-from robotmodel.errors import RobotModelError
+from robotmodel.cli._common import add_mapping_arguments, add_model_options, apply_verbose
 
 
 def register(sub: Any) -> None:
@@ -33,36 +33,10 @@ def register(sub: Any) -> None:
     parser.set_defaults(func=run)
 
 
-def _fail(args: argparse.Namespace, message: str) -> int:
-    print(f"robotmodel {args.command}: error: {' '.join(message.splitlines())}", file=sys.stderr)
-    return 2
-
-
 def run(args: argparse.Namespace) -> int:
     """Print the diff; 0 when equal, 1 when different, 2 when a description cannot be read."""
-    if args.git is None and args.new is None:
-        return _fail(args, "two files to compare, OLD and NEW (or one FILE with --git REV)")
-    if args.git is not None and args.new is not None:
-        return _fail(args, "--git REV compares one FILE with its revision REV; got two files")
-    if not args.tolerance >= 0.0 or args.tolerance == float("inf"):
-        return _fail(args, f"--tolerance must be a finite number >= 0, not {args.tolerance}")
-    if args.old == "-" and args.new == "-":
-        return _fail(args, "only one of OLD and NEW can be '-' (stdin)")
-    from robotmodel.diff import diff_descriptions, load_revision, render_json, render_text
+    from robotmodel.diff import run_diff
 
     apply_verbose(args)
-    try:
-        if args.git is not None:
-            old, old_label = load_revision(args.old, args.git, args.mappings, package_paths=args.package_path,
-                                           untrusted=args.untrusted)
-            new_file = args.old
-        else:
-            old, _ = load_description(args, args.old)
-            old_label, new_file = args.old, args.new
-        new, _ = load_description(args, new_file)
-        diff = diff_descriptions(old, new, tolerance=args.tolerance, old_label=old_label, new_label=new_file)
-    except RobotModelError as exc:
-        return _fail(args, str(exc))
-    sys.stdout.write(render_json(diff) if args.format == "json" else render_text(diff))
-    sys.stdout.flush()
-    return 0 if diff.equal else 1
+    return run_diff(args.old, args.new, args.mappings, git=args.git, format=args.format, tolerance=args.tolerance,
+                    package_paths=args.package_path, untrusted=args.untrusted, command=args.command)

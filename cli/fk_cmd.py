@@ -1,13 +1,14 @@
-"""``robotmodel fk``: every link's pose in the root frame for given joint values."""
+"""``robotmodel fk``: every link's pose in the root frame for given joint values.
+
+The program is :func:`robotmodel.kinematics.run_fk`.
+"""
 
 from __future__ import annotations
 
 import argparse
-import json
-import math
 from typing import Any
 
-from robotmodel.cli._common import add_model_arguments, joint_values, load_description
+from robotmodel.cli._common import add_model_arguments, load_description
 
 
 def register(sub: Any) -> None:
@@ -28,30 +29,7 @@ def register(sub: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Compute and print the poses."""
-    from robotmodel.kinematics import KinematicModel, KinematicState
+    from robotmodel.kinematics import parse_joint_words, run_fk
 
-    desc, _ = load_description(args)
-    model = KinematicModel(desc)
-    state = KinematicState(model).update(joint_values(args.joint), clamp=args.clamp)
-    links = [args.link] if args.link else list(model.link_names)
-    # An unknown --link is the library's UnknownLinkError, as from every kinematics API.
-    poses = {name: state.link_pose(name) for name in links}
-    if args.format == "json":
-        report = {"root": model.root, "links": {
-            name: {"xyz": list(p.translation), "quat_xyzw": list(p.rotation), "rpy": list(p.rpy())}
-            for name, p in poses.items()
-        }}
-        print(json.dumps(report, indent=2))
-        return 0
-    print(f"root: {model.root}")
-    for name, pose in poses.items():
-        x, y, z = pose.translation
-        qx, qy, qz, qw = pose.rotation
-        r, p, yaw = pose.rpy()
-        print(f"{name}:")
-        print(f"  Translation: [{x:.6f}, {y:.6f}, {z:.6f}]")
-        print(f"  Rotation: in Quaternion (xyzw) [{qx:.6f}, {qy:.6f}, {qz:.6f}, {qw:.6f}]")
-        print(f"  Rotation: in RPY (radian) [{r:.6f}, {p:.6f}, {yaw:.6f}]")
-        print(f"  Rotation: in RPY (degree) [{math.degrees(r):.6f}, {math.degrees(p):.6f}, "
-              f"{math.degrees(yaw):.6f}]")
-    return 0
+    return run_fk(load_description(args)[0], parse_joint_words(args.joint), link=args.link, clamp=args.clamp,
+                  format=args.format)

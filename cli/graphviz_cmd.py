@@ -3,16 +3,9 @@
 from __future__ import annotations
 
 import argparse
-import shutil
-import subprocess
-import sys
-import tempfile
-from pathlib import Path
 from typing import Any
 
-from robotmodel.cli._common import add_model_arguments, load_description, write_atomic
-
-from robotmodel.errors import RobotModelError
+from robotmodel.cli._common import add_model_arguments, load_description
 
 
 def register(sub: Any) -> None:
@@ -32,24 +25,6 @@ def register(sub: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Write the .gv, then the .pdf when graphviz's ``dot`` is installed."""
-    from robotmodel.check import to_graphviz
+    from robotmodel.check import run_urdf_to_graphviz
 
-    desc, _ = load_description(args)
-    base = args.output or desc.name
-    gv = Path(f"{base}.gv")
-    write_atomic(gv, to_graphviz(desc))
-    print(f"Created file {gv}")
-    dot = shutil.which("dot")
-    if dot is None:
-        print(f"dot (graphviz) is not installed: {base}.pdf was not created", file=sys.stderr)
-        return 0
-    pdf = Path(f"{base}.pdf")
-    with tempfile.TemporaryDirectory(dir=pdf.resolve().parent) as tmp:
-        tmp_pdf = Path(tmp) / pdf.name
-        result = subprocess.run([dot, "-Tpdf", str(gv), "-o", str(tmp_pdf)],
-                                capture_output=True, text=True, check=False)
-        if result.returncode != 0:
-            raise RobotModelError(f"dot failed on {gv}: {result.stderr.strip()}")
-        tmp_pdf.replace(pdf)
-    print(f"Created file {pdf}")
-    return 0
+    return run_urdf_to_graphviz(load_description(args)[0], args.output)

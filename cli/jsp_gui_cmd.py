@@ -31,25 +31,8 @@ def register(sub: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Serve the page with publishing on."""
-    import sys
+    from robotmodel.cli._common import options_from
 
-    from robotmodel.cli._common import joint_values
-    from robotmodel.cli._live import serve_live
-    from robotmodel.cli._ros_args import RosArgsError, logger_name, node_params
-    from robotmodel.cli._rosfmt import ros_log
-    from robotmodel.cli.jsp_cmd import jsp_settings
-    from robotmodel.cli.view_cmd import _load, frames_spec
+    from robotmodel.viewer import ViewOptions, run_joint_state_publisher_gui
 
-    name = args.node_name or "robotmodel_view"
-    try:
-        # joint_state_publisher_gui runs joint_state_publisher inside: the same parameters.
-        settings = jsp_settings(node_params(args.ros, args.namespace, name),
-                                lambda text: ros_log("WARN", logger_name(args.namespace, name), text))
-    except RosArgsError as exc:
-        print(f"robotmodel joint-state-publisher-gui: error: {exc}", file=sys.stderr)
-        return 2
-    initial = joint_values(args.joint)
-    initial.update(settings.pop("zeros"))  # zeros.JOINT wins over --joint, as a parameter over its flag
-    desc = _load(args) if args.file is not None else None
-    code: int = serve_live(args, desc, initial, frames_spec(args.frames), publish=True, jsp_options=settings)
-    return code
+    return run_joint_state_publisher_gui(options_from(ViewOptions, args))

@@ -2,14 +2,12 @@
 
 The nodes this project provides run as processes on the bus (robot/joint state publishers,
 the sliders, static transforms, the viewer for rviz); any other node is listed as skipped.
-See :mod:`robotmodel.launch` for what is read.
+See :mod:`robotmodel.launch` for what is read; the program is :func:`robotmodel.launch.run_launch`.
 """
 
 from __future__ import annotations
 
 import argparse
-import shlex
-import sys
 from typing import Any
 
 from robotmodel.cli._common import add_mapping_arguments
@@ -45,35 +43,7 @@ def register(sub: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Read the file, print the plan, then run it (unless --dry-run)."""
-    import shutil
-    import tempfile
-    from pathlib import Path
+    from robotmodel.launch import run_launch
 
-    from robotmodel.errors import LaunchError
-    from robotmodel.launch import build_plan, find_launch_file, load_launch_file, run_processes
-
-    paths = [Path(p).resolve() for p in args.package_path]
-    if args.file is None:
-        path = Path(args.target)
-        if not path.is_file():
-            raise LaunchError(f"{path}: no such launch file")
-    else:
-        path = find_launch_file(args.target, args.file, paths)
-    launch = load_launch_file(path, args.mappings, paths)
-    workdir = Path(tempfile.mkdtemp(prefix="robotmodel-launch-"))
-    try:
-        plan = build_plan(launch, workdir, package_paths=paths, browser=not args.no_browser)
-        for note in plan.notes:
-            print(f"note: {note}", file=sys.stderr)
-        for line in plan.skipped:
-            print(f"skipped: {line}", flush=True)
-        if args.dry_run:
-            for spec in plan.processes:
-                print(f"{spec.name}: robotmodel {shlex.join(spec.argv)}")
-            return 0
-        if not plan.processes:
-            print("nothing to start", file=sys.stderr)
-            return 0
-        return run_processes(plan.processes)
-    finally:
-        shutil.rmtree(workdir, ignore_errors=True)
+    return run_launch(args.target, args.file, args.mappings, package_paths=args.package_path, dry_run=args.dry_run,
+                      browser=not args.no_browser)

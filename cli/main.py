@@ -6,7 +6,7 @@ parsed namespace and returning an exit code. Errors the library raises on purpos
 (:class:`robotmodel.errors.RobotModelError`) are printed as one line and give exit 1;
 anything else is a bug and keeps its traceback.
 
-Subparsers are :class:`robotmodel.cli._common.CommandParser`: a command that calls
+Subparsers are :class:`robotmodel.cli._parser.CommandParser`: a command that calls
 ``add_model_arguments`` (or ``add_mapping_arguments``) gets xacro's ``name:=value`` words
 from anywhere on the line, and errors print that command's usage. Command modules are
 imported to build ``--help``, so they import only argparse-level code at the top and their
@@ -21,7 +21,7 @@ import logging
 import sys
 from collections.abc import Sequence
 
-from robotmodel.cli._common import CommandParser
+from robotmodel.cli._parser import CommandParser
 
 from robotmodel.errors import RobotModelError
 

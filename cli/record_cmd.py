@@ -3,23 +3,15 @@
 As ``ros2 bag record`` with MCAP storage: rosbag2's ros2 profile, CDR payloads, receive
 times as log times. Default topics: /tf, /tf_static, /joint_states, /robot_description.
 Ctrl-C or SIGTERM finish the file (summary and index) and exit 0; a crash leaves every
-chunk flushed so far (one per second) recoverable.
+chunk flushed so far (one per second) recoverable. The program is :func:`robotmodel.recording.run_record`.
 """
 
 from __future__ import annotations
 
 import argparse
-import sys
-from pathlib import Path
 from typing import Any
 
-from robotmodel.cli._bus_args import stop_on_signals
-from robotmodel.cli._rosfmt import ros_log
-
 __all__ = ["register", "run"]
-
-_NODE = "rosbag2_recorder"
-_DEFAULT_TOPICS = ("/tf", "/tf_static", "/joint_states", "/robot_description")
 
 
 def register(sub: Any) -> None:
@@ -45,29 +37,10 @@ def register(sub: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    """Subscribe, write until a stop signal, then close the file properly."""
-    name = args.output_name
-    out = Path(args.output if name is None else name if name.endswith(".mcap") else f"{name}.mcap")
-    if out.exists():
-        print(f"robotmodel record: error: {out} already exists (not overwritten)", file=sys.stderr)
-        return 1
-    if not args.flush_interval > 0:
-        print("robotmodel record: error: --flush-interval must be > 0", file=sys.stderr)
-        return 2
-    stop = stop_on_signals()
-    from robotmodel.bus import Node
-    from robotmodel.recording import McapWriter, Recorder
+    """Record until stopped."""
+    from robotmodel.recording import run_record
 
-    topics = args.topics or ([] if args.all else list(_DEFAULT_TOPICS))
-    with McapWriter(out, flush_every_s=args.flush_interval) as writer, Node(_NODE, connect=args.connect) as node:
-        recorder = Recorder(node, writer, topics, all_topics=args.all,
-                            on_subscribed=lambda t, _ty: ros_log("INFO", _NODE, f"Subscribed to topic '{t}'"))
-        ros_log("INFO", _NODE, f"Recording to '{out}'...")
-        try:
-            # Flushes in quiet spells too, so a crash never loses more than one interval.
-            while not stop.wait(args.flush_interval / 2):
-                writer.flush_if_due()
-        finally:
-            recorder.close()
-    ros_log("INFO", _NODE, f"Recording stopped: {writer.messages} message(s) in '{out}'")
-    return 0
+    name = args.output_name
+    output = args.output if name is None else name if name.endswith(".mcap") else f"{name}.mcap"
+    return run_record(output, args.topics, all_topics=args.all, flush_interval=args.flush_interval,
+                      connect=args.connect)

@@ -32,10 +32,10 @@ def register(sub: Any) -> None:
 def run(args: argparse.Namespace) -> int:
     """Open the router session and keep it until a signal; exit 0."""
     import zenoh
-    from robotmodel.cli._bus_args import stop_on_signals
 
     from robotmodel.bus._config import router_config
     from robotmodel.errors import BusError
+    from robotmodel.signals import stop_on_signals
 
     stop = stop_on_signals()
     config = router_config(args.listen, args.connect)

@@ -1,4 +1,7 @@
-"""``robotmodel robot-state-publisher``: ROS 2's robot_state_publisher as a process on the bus."""
+"""``robotmodel robot-state-publisher``: ROS 2's robot_state_publisher as a process on the bus.
+
+The program is :func:`robotmodel.publishers.run_robot_state_publisher`.
+"""
 
 from __future__ import annotations
 
@@ -6,7 +9,7 @@ import argparse
 from typing import Any
 
 from robotmodel.cli._common import add_model_arguments
-from robotmodel.cli._ros_args import add_node_arguments
+from robotmodel.cli._node_args import add_node_arguments
 
 _PARAMS_HELP = (
     "Parameters (--ros-args -p NAME:=VALUE or --params-file FILE), with ROS's types: "
@@ -15,8 +18,6 @@ _PARAMS_HELP = (
     "same setting's --flag; others are reported and ignored."
 )
 _NODE = "robot_state_publisher"
-_PARAMS = frozenset({"robot_description", "publish_frequency", "ignore_timestamp", "frame_prefix"})
-_WHY = {"use_sim_time": "there is no /clock here", "qos_overrides": "QoS overrides are not read here"}
 
 
 def register(sub: Any) -> None:
@@ -44,50 +45,11 @@ def register(sub: Any) -> None:
     parser.set_defaults(func=run)
 
 
-def _settings(args: argparse.Namespace, name: str, log: Any) -> str | None:
-    """Apply the node's parameter overrides to ``args``; returns the robot_description text, if given."""
-    from robotmodel.cli._ros_args import node_params
-    from robotmodel.cli._ros_params import typed, warn_unused
-
-    values = node_params(args.ros, args.namespace, name)
-    for param, kind in (("publish_frequency", "double"), ("ignore_timestamp", "bool"), ("frame_prefix", "string")):
-        value = typed(values, param, kind)
-        if value is not None:
-            setattr(args, param, value)
-    text = typed(values, "robot_description", "string")
-    warn_unused(values, lambda n: n in _PARAMS, log.warning, _WHY)
-    return None if text is None else str(text)
-
-
 def run(args: argparse.Namespace) -> int:
-    """Load the robot, publish, and serve joint states until stopped."""
-    import sys
+    """Publish until stopped."""
+    from robotmodel.publishers import run_robot_state_publisher
 
-    from robotmodel.cli._bus_args import stop_on_signals
-    from robotmodel.cli._common import load_description
-    from robotmodel.cli._publisher_log import ros_console
-    from robotmodel.cli._ros_args import RosArgsError, logger_name
-
-    from robotmodel.bus import Node
-    from robotmodel.publishers import RobotStatePublisher, check_publish_frequency
-
-    name = args.node_name or _NODE
-    log = ros_console(logger_name(args.namespace, name))
-    try:
-        text = _settings(args, name, log)
-    except RosArgsError as exc:
-        print(f"robotmodel robot-state-publisher: error: {exc}", file=sys.stderr)
-        return 2
-    check_publish_frequency(args.publish_frequency)
-    # As RSP before 3.5.1: the parameter is the robot; FILE is the fallback when it is empty.
-    desc: Any = text if text else (load_description(args)[0] if args.file is not None else None)
-    if desc is None:
-        log.critical("robot_description parameter must not be empty")
-        return 1
-    stop = stop_on_signals()
-    # RSP's topics are relative (joint_states, robot_description): they follow the namespace; /tf does not.
-    with Node(name, args.namespace, connect=args.connect, remappings=args.ros.remaps) as node, RobotStatePublisher(
-            desc, bus=node, publish_frequency=args.publish_frequency, frame_prefix=args.frame_prefix,
-            ignore_timestamp=args.ignore_timestamp, logger=log):
-        stop.wait()
-    return 0
+    return run_robot_state_publisher(args.file, args.mappings, package_paths=args.package_path,
+                                     untrusted=args.untrusted, publish_frequency=args.publish_frequency,
+                                     frame_prefix=args.frame_prefix, ignore_timestamp=args.ignore_timestamp,
+                                     connect=args.connect, namespace=args.namespace, ros=args.ros)

@@ -1,47 +1,15 @@
 """``robotmodel static-transform-publisher`` (alias ``static_transform_publisher``).
 
-Publishes one transform, latched on ``/tf_static``, until Ctrl-C or SIGTERM (exit 0), as
-ROS 2 Jazzy's tf2_ros program does; ROS 1 tf's forms with a period republish on ``/tf``.
-The argument forms and texts are in :mod:`robotmodel.cli._static_args`.
+The program is :func:`robotmodel.tf_ros.run_static_transform_publisher`; it parses its own
+words (ROS 2's flags and positional forms, ROS 1's with a period), as ROS's does.
 """
 
 from __future__ import annotations
 
 import argparse
-import sys
-import time
 from typing import Any
 
-from robotmodel.cli._bus_args import split_connect, stop_on_signals
-from robotmodel.cli._ros_args import RosArgsError, split_ros_words, warn_ignored_params
-from robotmodel.cli._rosfmt import ros_log
-from robotmodel.cli._static_args import (
-    USAGE,
-    StaticArgsError,
-    StaticTransformSpec,
-    parse_static_args,
-    startup_message,
-    validation_errors,
-)
-
-__all__ = ["HELP_MORE", "register", "run"]
-
-# Printed after ROS 2's own usage text on --help: the forms and words robotmodel takes beyond it.
-HELP_MORE = """
-
-also accepted:
-  x y z yaw pitch roll frame_id child_frame_id
-  x y z qx qy qz qw frame_id child_frame_id
-                        ROS 2's deprecated positional forms (logged as deprecated)
-  x y z yaw pitch roll frame_id child_frame_id period_in_ms
-  x y z qx qy qz qw frame_id child_frame_id period_in_ms
-                        ROS 1 tf's forms: republish on /tf every period_in_ms,
-                        stamped one period ahead
-  --connect ENDPOINT    zenoh endpoint to connect to (repeatable)
-  --namespace NS        the node's namespace (/tf and /tf_static stay global)
-  --ros-args ... [--]   ROS 2 arguments: -r /tf_static:=TOPIC remaps a topic,
-                        -r __ns:=/NS and -r __node:=NAME move and rename the node;
-                        -p NAME:=VALUE and --params-file FILE are named in a warning"""
+__all__ = ["register", "run"]
 
 
 def register(sub: Any) -> None:
@@ -59,58 +27,8 @@ def register(sub: Any) -> None:
     parser.set_defaults(func=run)
 
 
-def _transform(spec: StaticTransformSpec, stamp_ns: int) -> Any:
-    from robotmodel.msgs import make_transform
-
-    return make_transform(spec.frame_id, spec.child_frame_id, spec.translation, spec.rotation, stamp_ns)
-
-
 def run(args: argparse.Namespace) -> int:
-    """Parse, validate, publish, then wait for a stop signal."""
-    try:
-        words, namespace, ros = split_ros_words(args.words)
-    except RosArgsError as exc:
-        print(f"robotmodel static-transform-publisher: error: {exc}", file=sys.stderr)
-        return 2
-    words, endpoints = split_connect(words)
-    try:
-        spec = parse_static_args(words, lambda text: ros_log("WARN", "", text))
-    except StaticArgsError as exc:
-        ros_log("ERROR", "", f"error parsing command line arguments: {exc}")
-        print(USAGE, flush=True)
-        return 1
-    if spec.help:
-        print(USAGE + HELP_MORE, flush=True)
-        return 0
+    """Run static_transform_publisher on the words."""
+    from robotmodel.tf_ros import run_static_transform_publisher
 
-    from robotmodel.tf_ros._node import unique_name
-
-    name = ros.node_name or unique_name("static_transform_publisher_")
-    errors = validation_errors(spec, name)
-    if errors:
-        for line in errors:
-            ros_log("ERROR", name, line)
-        return 1
-
-    stop = stop_on_signals()
-    from robotmodel.bus import Node
-    from robotmodel.tf_ros import StaticTransformBroadcaster, TransformBroadcaster
-
-    # /tf and /tf_static are absolute: the namespace names the node only, as in ROS.
-    warn_ignored_params(ros, namespace, name)
-    with Node(name, namespace, connect=endpoints, remappings=ros.remaps) as node:
-        if spec.period_ms is None:
-            with StaticTransformBroadcaster(node) as static:
-                static.send_transform(_transform(spec, time.time_ns()))
-                ros_log("INFO", name, startup_message(spec))
-                stop.wait()
-            return 0
-        # ROS 1 tf: republish on /tf every period, stamped one period ahead so that
-        # listeners can interpolate up to the next message.
-        period_ns = round(spec.period_ms * 1e6)
-        with TransformBroadcaster(node) as dynamic:
-            dynamic.send_transform(_transform(spec, time.time_ns() + period_ns))
-            ros_log("INFO", name, startup_message(spec))
-            while not stop.wait(period_ns / 1e9):
-                dynamic.send_transform(_transform(spec, time.time_ns() + period_ns))
-    return 0
+    return run_static_transform_publisher(args.words)

@@ -1,57 +1,15 @@
 """``robotmodel tf2-echo SOURCE TARGET [RATE]`` (alias ``tf2_echo``): print a transform as it arrives.
 
-With ``--bag FILE [--time T | --every DT]`` it answers from a recording instead of the
-bus, in the same format (see :mod:`robotmodel.cli._bag_echo`).
-
-Prints TARGET's pose in SOURCE (``lookupTransform(SOURCE, TARGET, latest)``) every
-1/RATE seconds (default 1 Hz) in tf2_echo's format; until the frames are connected it logs
-tf2_echo's throttled ``Waiting for transform ...`` line. Ctrl-C or SIGTERM end it (exit 0).
+The program (and its ``--bag`` form) is :func:`robotmodel.tf_ros.run_tf2_echo`; it parses its
+own words, as ROS's does.
 """
 
 from __future__ import annotations
 
 import argparse
-import sys
-import time
 from typing import Any
 
-from robotmodel.cli._bag_args import BagWordsError, split_bag_words
-from robotmodel.cli._bus_args import split_connect, stop_on_signals
-from robotmodel.cli._echo_fmt import (
-    USAGE,
-    EchoArgsError,
-    failure_text,
-    format_echo,
-    parse_echo_args,
-    waiting_message,
-)
-from robotmodel.cli._ros_args import RosArgsError, split_ros_words, warn_ignored_params
-from robotmodel.cli._rosfmt import ros_log
-
-__all__ = ["HELP_MORE", "can_transform_reason", "register", "run"]
-
-_NODE = "tf2_echo"
-
-# Printed after tf2_echo's own usage text on --help: the words robotmodel takes beyond ROS's.
-HELP_MORE = """
-robotmodel also takes:
-  --connect ENDPOINT   zenoh endpoint to connect to (repeatable)
-  --namespace NS       the node's namespace (/tf and /tf_static stay global)
-  --ros-args ... [--]  ROS 2 arguments: -r /tf:=TOPIC remaps a topic, -r __ns:=/NS and
-                       -r __node:=NAME move and rename the node; -p NAME:=VALUE and
-                       --params-file FILE are named in a warning (tf2_echo has no parameters)
-
-From a recording instead of the bus (ROS 1 .bag, ROS 2 bag folder, .db3 or .mcap):
-  tf2_echo --bag FILE source_frame target_frame [echo_rate] [--time T | --every DT] [--urdf FILE]
-  --bag FILE           read TF from this recording
-  --time T             the transform at T: seconds since the epoch, or +S for S seconds
-                       after the first recorded transform (exit 1 if it cannot be looked up)
-  --every DT           the transform every DT seconds of the recording
-                       (default 1/echo_rate: once per recorded second)
-  --urdf FILE          the robot whose /joint_states give TF when the recording has no /tf
-                       (default: the recorded /robot_description)
-  --no-progress        no progress bar on stderr
-"""
+__all__ = ["register", "run"]
 
 
 def register(sub: Any) -> None:
@@ -66,90 +24,8 @@ def register(sub: Any) -> None:
     parser.set_defaults(func=run)
 
 
-def can_transform_reason(buffer: Any, target: str, source: str) -> str:
-    """Empty when ``target <- source`` can be looked up at the latest time, else tf2's canTransform text."""
-    if target == source:
-        return ""
-    known = set(buffer.all_frame_names())
-    for arg, frame in (("target_frame", target), ("source_frame", source)):
-        if not frame:
-            why = "in tf2 frame_ids cannot be empty"
-        elif frame.startswith("/"):
-            why = "in tf2 frame_ids cannot start with a '/'"
-        elif frame not in known:
-            why = "frame does not exist"
-        else:
-            continue
-        return f'Invalid frame ID "{frame}" passed to canTransform argument {arg} - {why}'
-    ok, reason = buffer.can_transform_ns(target, source, 0)
-    return "" if ok else str(reason)
-
-
 def run(args: argparse.Namespace) -> int:
-    """Listen, wait for the frames, then print the transform at the given rate."""
-    try:
-        words, namespace, ros = split_ros_words(args.words, _NODE)
-    except RosArgsError as exc:
-        print(f"robotmodel tf2-echo: error: {exc}", file=sys.stderr)
-        return 2
-    words, endpoints = split_connect(words)
-    if words and words[0] in ("-h", "--help"):
-        print(USAGE + HELP_MORE, end="", flush=True)
-        return 0
-    try:
-        words, bag_options = split_bag_words(words)
-    except BagWordsError as exc:
-        print(f"robotmodel tf2-echo: error: {exc}", file=sys.stderr)
-        return 2
-    if bag_options and "bag" not in bag_options:
-        print("robotmodel tf2-echo: error: --time, --every and --urdf need --bag FILE", file=sys.stderr)
-        return 2
-    try:
-        echo = parse_echo_args(words)
-    except EchoArgsError as exc:
-        print(str(exc), end="" if exc.to_stdout else "\n", file=sys.stdout if exc.to_stdout else sys.stderr,
-              flush=True)
-        return int(exc.code)
-    if bag_options:
-        from robotmodel.cli._bag_echo import run_bag_echo
+    """Run tf2_echo on the words."""
+    from robotmodel.tf_ros import run_tf2_echo
 
-        return int(run_bag_echo(echo, bag_options))
-
-    stop = stop_on_signals()
-    from robotmodel.bus import Node
-    from robotmodel.errors import TransformException
-    from robotmodel.tf import Buffer, Time
-    from robotmodel.tf_ros import TransformListener
-
-    period = 1.0 / echo.rate_hz
-    source, target = echo.source_frame, echo.target_frame
-    buffer = Buffer()
-    # /tf and /tf_static are absolute: the namespace names the node only, as in ROS.
-    warn_ignored_params(ros, namespace, ros.node_name or _NODE)
-    with Node(ros.node_name or _NODE, namespace, connect=endpoints, remappings=ros.remaps) as node, \
-            TransformListener(buffer, node):
-        last_log = -1.0
-        while not stop.is_set():
-            reason = can_transform_reason(buffer, source, target)
-            if not reason:
-                break
-            now = time.monotonic()
-            if last_log < 0 or now - last_log >= 1.0:
-                ros_log("INFO", _NODE, waiting_message(source, target, reason))
-                last_log = now
-            stop.wait(period)
-        printed = False
-        while not stop.is_set():
-            try:
-                t = buffer.lookup_transform(source, target, Time())
-            except TransformException as exc:
-                text = failure_text(time.time_ns() / 1e9, str(exc), buffer.all_frames_as_string(), printed)
-            else:
-                tr, rot, stamp = t.transform.translation, t.transform.rotation, t.header.stamp
-                text = format_echo(stamp.sec, stamp.nanosec, (tr.x, tr.y, tr.z), (rot.x, rot.y, rot.z, rot.w))
-                printed = True
-            sys.stdout.write(text)
-            sys.stdout.flush()
-            stop.wait(period)
-    return 0
-
+    return run_tf2_echo(args.words)

@@ -3,16 +3,15 @@
 Writes TARGET's pose in SOURCE (as tf2_echo's lookup) over the recording: at the
 recorded stamps of the frames between them, or every 1/HZ seconds with ``--rate``. CSV
 columns ``stamp_ns,time_s,x,y,z,qx,qy,qz,qw``; Parquet when the name ends in ``.parquet``
-(needs pyarrow).
+(needs pyarrow). The program is :func:`robotmodel.recording.run_tf_export`.
 """
 
 from __future__ import annotations
 
 import argparse
-import sys
 from typing import Any
 
-from robotmodel.cli._bag_args import add_bag_arguments, load_bag
+from robotmodel.cli._bag_args import add_bag_arguments
 
 __all__ = ["register", "run"]
 
@@ -34,14 +33,7 @@ def register(sub: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Load the recording, sample the pose, write the file."""
-    if args.rate is not None and not 0 < args.rate < float("inf"):
-        print("robotmodel tf-export: error: --rate must be a positive number", file=sys.stderr)
-        return 2
-    from robotmodel.recording import pose_series, write_poses
+    from robotmodel.recording import run_tf_export
 
-    loaded = load_bag(args)
-    series = pose_series(loaded.buffer, args.source_frame, args.target_frame, args.rate)
-    write_poses(series, args.output)
-    print(f"{len(series.stamps)} pose(s) of {args.target_frame} in {args.source_frame} written to {args.output}",
-          file=sys.stderr)
-    return 0
+    return run_tf_export(args.bag, args.source_frame, args.target_frame, args.output, rate=args.rate, urdf=args.urdf,
+                         progress=False if args.no_progress else None)

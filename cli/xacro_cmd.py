@@ -2,16 +2,16 @@
 
 Takes every option of xacro 2.1.1's command line, with its meaning: ``-o FILE``,
 ``--deps``, ``-i/--inorder`` (a no-op), ``--root-dir DIR``, ``-q``, ``-v`` (repeatable)
-and ``--verbosity N``; ``name:=value`` words may stand anywhere.
+and ``--verbosity N``; ``name:=value`` words may stand anywhere. The program is
+:func:`robotmodel.xacro.run_xacro`.
 """
 
 from __future__ import annotations
 
 import argparse
-import sys
 from typing import Any
 
-from robotmodel.cli._common import add_model_arguments, apply_verbose, read_stdin_document, write_atomic
+from robotmodel.cli._common import add_model_arguments, apply_verbose
 
 VERBOSITY_HELP = (
     "set verbosity level: 0 quiet, suppressing warnings; 1 default, warnings and error locations; "
@@ -43,24 +43,11 @@ def register(sub: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Expand and print or write the result."""
-    from robotmodel.xacro import dependencies, expand, expand_string
+    from robotmodel.xacro import run_xacro
 
     apply_verbose(args)
-    if args.in_order:
-        # xacro's own notice, word for word.
-        print("xacro: in-order processing became default in ROS Melodic. You can drop the option.",
-              file=sys.stderr)
-    common = {"package_paths": args.package_path, "untrusted": args.untrusted, "verbosity": args.verbosity}
-    if args.file == "-":
-        if args.just_deps:
-            args.parser.error("--deps needs an input file, not stdin")
-        text = expand_string(read_stdin_document(), args.mappings, base_dir=args.root_dir, name="-", **common)
-    elif args.just_deps:
-        text = " ".join(dependencies(args.file, args.mappings, root_dir=args.root_dir, **common))
-    else:
-        text = expand(args.file, args.mappings, root_dir=args.root_dir, **common)
-    if args.output:
-        write_atomic(args.output, text)
-    else:
-        sys.stdout.write(text)
-    return 0
+    if args.file == "-" and args.just_deps:
+        args.parser.error("--deps needs an input file, not stdin")
+    return run_xacro(args.file, args.mappings, output=args.output, just_deps=args.just_deps, in_order=args.in_order,
+                     root_dir=args.root_dir, verbosity=args.verbosity, package_paths=args.package_path,
+                     untrusted=args.untrusted)

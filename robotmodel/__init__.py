@@ -20,6 +20,13 @@ Subpackages, one concern each:
 - :mod:`robotmodel.publishers`: robot_state_publisher and joint_state_publisher.
 - :mod:`robotmodel.viewer`: meshcat's browser viewer.
 - :mod:`robotmodel.signals`: stopping a long-running tool cleanly on SIGINT/SIGTERM.
+- :mod:`robotmodel.rcl`: rcl's ``--ros-args`` (remaps, parameters, namespace) and console lines.
+- :mod:`robotmodel.process`: the one supervisor of child processes (``launch``, ``demo``).
+- :mod:`robotmodel.topic`: ``ros2 topic list`` / ``echo`` on the bus.
+- :mod:`robotmodel.demo`: the whole pipeline on the bundled diffbot (``robotmodel demo``).
+
+Each ``robotmodel`` command is its parser (``cli/``, installed as ``robotmodel.cli``) and one
+call into these packages (``run_*`` functions), which never import the command line.
 """
 
 from __future__ import annotations

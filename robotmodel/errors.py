@@ -34,6 +34,11 @@ caller (and the CLI) can catch one class and print one line. The tree::
     │                               substitution, a missing include or arg (file:line first)
     ├── ConfigError                 a project config ([tool.robotmodel] in pyproject.toml or
     │                               robotmodel.toml) that cannot be used (file and key first)
+    ├── CommandLineError            a ROS program's words refused with that program's text
+    │   ├── RosArgsError            a --ros-args word rcl would refuse: remap, parameter, params
+    │   │                           file, namespace (rcl's text; also a ValueError; robotmodel.rcl)
+    │   ├── StaticArgsError         static_transform_publisher's words (ROS 2's text; robotmodel.tf_ros)
+    │   └── EchoArgsError           tf2_echo's words (its text and exit code; robotmodel.tf_ros)
     └── TransformException          tf2's root (see robotmodel.tf)
         ├── LookupException
         ├── ConnectivityException
@@ -52,8 +57,10 @@ from typing import Any
 
 __all__ = [
     "BusError",
+    "CommandLineError",
     "ConfigError",
     "ConnectivityException",
+    "EchoArgsError",
     "ExtrapolationDirection",
     "ExtrapolationException",
     "InvalidArgumentException",
@@ -70,6 +77,8 @@ __all__ = [
     "RevisionError",
     "RobotModelError",
     "Ros1Error",
+    "RosArgsError",
+    "StaticArgsError",
     "TimeoutException",
     "TransformException",
     "URDFError",
@@ -160,6 +169,30 @@ class LaunchError(RobotModelError):
 
 class ConfigError(RobotModelError):
     """A project config (``[tool.robotmodel]`` or ``robotmodel.toml``) cannot be used; names the file and key."""
+
+
+class CommandLineError(RobotModelError):
+    """The words of a ROS program's command line are refused; the text is that program's own (one line)."""
+
+
+class RosArgsError(CommandLineError, ValueError):
+    """A ROS argument or namespace that rcl (or rclpy) would refuse; the text is one line, rcl's."""
+
+
+class StaticArgsError(CommandLineError):
+    """static_transform_publisher's words do not form a valid command line; ``str()`` is ROS 2's error text."""
+
+
+class EchoArgsError(CommandLineError):
+    """A bad tf2_echo command line: ``str()`` is the text to print, ``code`` the exit code tf2_echo uses.
+
+    ``to_stdout``: tf2_echo prints this one (its usage) on stdout rather than stderr.
+    """
+
+    def __init__(self, message: str, code: int, to_stdout: bool = False) -> None:
+        super().__init__(message)
+        self.code = code
+        self.to_stdout = to_stdout
 
 
 class BusError(RobotModelError):

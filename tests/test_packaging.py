@@ -80,3 +80,19 @@ def test_every_imported_package_is_declared() -> None:
 def test_the_user_list_is_installed_by_pip_install() -> None:
     assert {"xacro", "yourdfpy", "pin", "trimesh", "meshcat", "numpy"} <= _declared()
     assert "pytest" in _declared("test")
+
+
+def test_cli_is_thin_and_the_library_never_imports_it() -> None:
+    """cli/ holds parsers and one library call per command: under 1,500 lines, no module over 150;
+    nothing under robotmodel/ imports it (the library's programs are reachable without the CLI)."""
+    sizes = {p.name: len(p.read_text(encoding="utf-8").splitlines()) for p in sorted((REPO / "cli").glob("*.py"))}
+    assert sum(sizes.values()) < 1500, sizes
+    assert {name: n for name, n in sizes.items() if n > 150} == {}
+    importers = []
+    for path in sorted((REPO / "robotmodel").rglob("*.py")):
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            names = ([a.name for a in node.names] if isinstance(node, ast.Import)
+                     else [node.module or ""] if isinstance(node, ast.ImportFrom) else [])
+            if any(n == "robotmodel.cli" or n.startswith("robotmodel.cli.") for n in names):
+                importers.append(str(path.relative_to(REPO)))
+    assert importers == []

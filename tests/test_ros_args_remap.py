@@ -12,10 +12,17 @@ import re
 from pathlib import Path
 
 import pytest
-from robotmodel.cli._ros_args import RosArgsError, node_params, take_ros_args
-from robotmodel.cli._ros_params import for_node, rule_entry, type_name, typed
 
 from robotmodel.bus import BusError, Node, RemapRule, parse_rules, remap_topic
+from robotmodel.rcl import (
+    RosArgsError,
+    node_params,
+    param_rule_entry,
+    param_type_name,
+    params_for_node,
+    take_ros_args,
+    typed_param,
+)
 
 
 def remap(rules: list[str], name: str, node: str = "NodeName", ns: str = "/") -> str:
@@ -159,21 +166,21 @@ def test_cli_accepts_rcls_other_flags():
     ("['/a/joint_states']", ("/a/joint_states",), "string_array"),
 ])
 def test_values_are_typed_as_rcl_types_them(text, value, kind):
-    node, name, got = rule_entry("-p", f"x:={text}")
-    assert (node, name, got, type_name(got)) == ("/**", "x", value, kind)
+    node, name, got = param_rule_entry("-p", f"x:={text}")
+    assert (node, name, got, param_type_name(got)) == ("/**", "x", value, kind)
 
 
 def test_inf_and_nan_spellings():
-    assert rule_entry("-p", "x:=-.inf")[2] == -math.inf
-    assert math.isnan(rule_entry("-p", "x:=.NaN")[2])  # type: ignore[arg-type]
+    assert param_rule_entry("-p", "x:=-.inf")[2] == -math.inf
+    assert math.isnan(param_rule_entry("-p", "x:=.NaN")[2])  # type: ignore[arg-type]
 
 
 def test_node_prefixed_override_applies_to_that_node_only():
-    entries = [rule_entry("-p", "rate:=5"), rule_entry("-p", "joint_state_publisher:rate:=7")]
-    assert for_node(entries, "/joint_state_publisher") == {"rate": 7}
-    assert for_node(entries, "/other") == {"rate": 5}
+    entries = [param_rule_entry("-p", "rate:=5"), param_rule_entry("-p", "joint_state_publisher:rate:=7")]
+    assert params_for_node(entries, "/joint_state_publisher") == {"rate": 7}
+    assert params_for_node(entries, "/other") == {"rate": 5}
     # 'name:' means '/name': a node in a namespace needs its full name or a wildcard.
-    assert for_node(entries, "/r1/joint_state_publisher") == {"rate": 5}
+    assert params_for_node(entries, "/r1/joint_state_publisher") == {"rate": 5}
 
 
 PARAMS = """\
@@ -235,11 +242,11 @@ def test_bad_params_files(tmp_path: Path, text, why):
 
 def test_wrong_type_is_rclcpps_text():
     with pytest.raises(RosArgsError) as info:
-        typed({"publish_frequency": 50}, "publish_frequency", "double")
+        typed_param({"publish_frequency": 50}, "publish_frequency", "double")
     assert str(info.value) == ("parameter 'publish_frequency' has invalid type: Wrong parameter type, parameter "
                                "{publish_frequency} is of type {double}, setting it to {integer} is not allowed.")
-    assert typed({"rate": 20.5}, "rate", "integer", "double") == 20.5
-    assert typed({}, "rate", "integer") is None
+    assert typed_param({"rate": 20.5}, "rate", "integer", "double") == 20.5
+    assert typed_param({}, "rate", "integer") is None
 
 
 def test_library_publishers_take_remappings_through_their_node_options():

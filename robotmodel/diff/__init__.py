@@ -7,6 +7,7 @@
   configuration (FK before and after; largest first).
 - :func:`render_text` (for a code review) and :func:`render_json` / :func:`diff_json`
   (for scripts).
+- :func:`run_diff`: the ``diff`` command (exit 0 equal, 1 different, 2 error).
 - :func:`load_revision`: a file as it was at a git revision (xacro includes resolved in
   that revision's files).
 
@@ -15,6 +16,7 @@ Numbers are equal within :data:`DEFAULT_TOLERANCE` (1e-9, relative above 1).
 
 from __future__ import annotations
 
+from robotmodel.diff._command import run_diff
 from robotmodel.diff._diff import diff_descriptions
 from robotmodel.diff._git import load_revision
 from robotmodel.diff._json import diff_json, render_json
@@ -45,5 +47,6 @@ __all__ = [
     "load_revision",
     "render_json",
     "render_text",
+    "run_diff",
     "zero_poses",
 ]

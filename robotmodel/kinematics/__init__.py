@@ -9,6 +9,8 @@
 - :func:`batch_link_matrices`: N configurations at once, vectorized.
 - :func:`to_yourdfpy` / :func:`trimesh_scene`: the robot posed at a configuration as a
   ``yourdfpy.URDF`` or a ``trimesh.Scene``, for code written for those libraries.
+- :func:`run_fk`: the ``fk`` command's report (every link's pose, text or JSON).
+- :func:`parse_joint_words`: ``NAME=VALUE`` words (``--joint``) to a dict, with one-line errors.
 """
 
 from __future__ import annotations
@@ -22,7 +24,9 @@ from robotmodel.kinematics._publish import (
     joint_transforms,
     static_transforms,
 )
+from robotmodel.kinematics._report import run_fk
 from robotmodel.kinematics._state import KinematicState
+from robotmodel.kinematics._words import parse_joint_words
 from robotmodel.kinematics._yourdfpy import to_yourdfpy, trimesh_scene
 
 __all__ = [
@@ -35,6 +39,8 @@ __all__ = [
     "batch_link_matrices",
     "batch_link_poses",
     "joint_transforms",
+    "parse_joint_words",
+    "run_fk",
     "static_transforms",
     "to_yourdfpy",
     "trimesh_scene",

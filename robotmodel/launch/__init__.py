@@ -10,8 +10,10 @@
 - :func:`build_plan`: the ``robotmodel`` commands standing in for those nodes
   (:class:`LaunchPlan` of :class:`ProcessSpec`), other nodes listed as skipped; each with
   the node's name, namespace, parameters and remap rules as a ``--ros-args`` block.
-- :func:`run_processes`: start them, stop them together on SIGINT/SIGTERM, reap them all.
+- :func:`run_processes`: start them under one :class:`robotmodel.process.Supervisor`, stop
+  them together on SIGINT/SIGTERM, reap them all.
 - :func:`find_launch_file`: ``PKG FILE`` to a path, as ``roslaunch``/``ros2 launch`` do.
+- :func:`run_launch`: all of it, as ``robotmodel launch`` runs it (``--dry-run`` too).
 
 Bad input raises :class:`robotmodel.errors.LaunchError` starting with ``FILE:LINE:``.
 """
@@ -22,7 +24,7 @@ from robotmodel.launch._find import find_launch_file
 from robotmodel.launch._kinds import build_plan
 from robotmodel.launch._loader import LaunchFile, load_launch_file
 from robotmodel.launch._model import Dialect, LaunchPlan, NodeDecl, Param, ProcessSpec, XacroSource
-from robotmodel.launch._supervisor import run_processes
+from robotmodel.launch._run import run_launch, run_processes
 
 __all__ = [
     "Dialect",
@@ -35,5 +37,6 @@ __all__ = [
     "build_plan",
     "find_launch_file",
     "load_launch_file",
+    "run_launch",
     "run_processes",
 ]

@@ -2,18 +2,19 @@
 
 launch_ros's order: the node's ``ros_args`` words, ``-r __node:=NAME``, ``-r __ns:=/NS``, the
 scope's ``<set_parameter>`` values, the node's parameters (inline ones and params files in the
-file's order), then the remap rules. The commands read it with
-``robotmodel.cli._ros_args`` (rcl's rules), so one mapping decides what each parameter means.
+file's order), then the remap rules. The commands read it with :mod:`robotmodel.rcl`
+(rcl's rules), whose parameter-name rule decides here too, so one mapping decides what each
+parameter means.
 """
 
 from __future__ import annotations
 
-import re
 import shlex
 from dataclasses import replace
 
 from robotmodel.errors import LaunchError
 from robotmodel.launch._model import NodeDecl, ProcessSpec
+from robotmodel.rcl import is_param_name
 
 __all__ = ["ros_tail"]
 
@@ -27,7 +28,6 @@ _COMMAND_NAME = {
 }
 # The name the ROS executable gives itself when the launch file gives none, where ours differs.
 _ROS_NAME = {"joint_state_publisher_gui": "joint_state_publisher_gui"}
-_PARAM_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*(\.[A-Za-z_][A-Za-z0-9_]*)*")
 
 
 def ros_tail(spec: ProcessSpec, node: NodeDecl, consumed: frozenset[str], notes: list[str]) -> ProcessSpec:
@@ -49,7 +49,7 @@ def ros_tail(spec: ProcessSpec, node: NodeDecl, consumed: frozenset[str], notes:
     for key, param in node.params.items():
         if key in consumed:
             continue
-        if param.value is None or not _PARAM_NAME.fullmatch(key):
+        if param.value is None or not is_param_name(key):
             notes.append(f"{param.file}:{param.line}: parameter '{key}' of {node.full_name} not passed on "
                          "(only plain values with ROS 2 parameter names are)")
             continue

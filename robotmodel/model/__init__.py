@@ -5,6 +5,7 @@ from __future__ import annotations
 from robotmodel.model._load import load
 from robotmodel.model._parse import parse_urdf
 from robotmodel.model._robot import RobotDescription
+from robotmodel.model._source import load_source, read_stdin_document
 from robotmodel.model._types import (
     RGBA,
     Box,
@@ -52,6 +53,8 @@ __all__ = [
     "Vec3",
     "Visual",
     "load",
+    "load_source",
     "parse_urdf",
+    "read_stdin_document",
     "to_urdf",
 ]

@@ -11,6 +11,9 @@ while ``/tf`` and ``/tf_static`` are absolute and shared by every namespace.
 - :class:`RobotStateLogic`: robot_state_publisher's rules with no bus: a JointState in,
   the /tf transforms out; the /tf_static set; the rate cap, ``frame_prefix`` and
   ``ignore_timestamp``.
+- :func:`run_robot_state_publisher`, :func:`run_joint_state_publisher`: the ROS programs
+  (``robotmodel robot-state-publisher`` / ``joint-state-publisher``), ROS parameters
+  included (:func:`jsp_settings` maps joint_state_publisher's).
 - :class:`JointStateLogic`: joint_state_publisher's joints, defaults, ``zeros``, mimic
   resolution and ``source_list`` merging, with no bus.
 """
@@ -21,6 +24,7 @@ from robotmodel.publishers._errors import PublisherError
 from robotmodel.publishers._jsp import JointStatePublisher
 from robotmodel.publishers._jsp_joints import DependentJoint, FreeJoint, JointLayout, read_layout
 from robotmodel.publishers._jsp_state import JointStateLogic
+from robotmodel.publishers._programs import jsp_settings, run_joint_state_publisher, run_robot_state_publisher
 from robotmodel.publishers._rsp import RobotStatePublisher
 from robotmodel.publishers._rsp_state import RobotStateLogic, check_publish_frequency
 
@@ -34,5 +38,8 @@ __all__ = [
     "RobotStateLogic",
     "RobotStatePublisher",
     "check_publish_frequency",
+    "jsp_settings",
     "read_layout",
+    "run_joint_state_publisher",
+    "run_robot_state_publisher",
 ]

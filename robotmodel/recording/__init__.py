@@ -8,6 +8,7 @@
   :func:`sample_times`: evenly spaced instants over a span, refused when absurdly many.
 - :class:`McapWriter` and :class:`Recorder`: MCAP files in rosbag2's ros2 profile (CDR),
   written from the bus, crash-tolerant chunk by chunk.
+- :func:`run_record` and :func:`run_tf_export`: the ``record`` and ``tf-export`` programs.
 
 The core (:mod:`robotmodel.tf`) does not depend on this package: a buffer is filled from
 here, not the other way round.
@@ -27,6 +28,7 @@ from robotmodel.recording._export import (
 from robotmodel.recording._load import DEFAULT_TOPICS, Loaded, load_buffer, load_recording
 from robotmodel.recording._mcap import McapWriter, qos_yaml
 from robotmodel.recording._open import Format, Recording, Topic, detect_format, ros1_typestore
+from robotmodel.recording._programs import run_record, run_tf_export
 from robotmodel.recording._record import KNOWN_TOPICS, Recorder
 
 __all__ = [
@@ -48,6 +50,8 @@ __all__ = [
     "pose_series",
     "qos_yaml",
     "ros1_typestore",
+    "run_record",
+    "run_tf_export",
     "sample_times",
     "write_poses",
 ]

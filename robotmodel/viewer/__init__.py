@@ -6,6 +6,12 @@
   (:meth:`Viewer.show_frames`) and TF frames (:meth:`Viewer.show_tf`), swap the robot
   (:meth:`Viewer.set_description`), export a self-contained page (:meth:`Viewer.static_html`),
   place the camera (:meth:`Viewer.set_camera`) or have it follow a point (:meth:`Viewer.track`).
+- :class:`LiveViewer`: a Viewer fed from the bus, as rviz's RobotModel and TF displays
+  (robot from ``/robot_description``, joints from ``/joint_states``, frames from ``/tf``)
+  or joint_state_publisher_gui (sliders published on ``/joint_states``).
+- :func:`run_view`, :func:`run_joint_state_publisher_gui`, :func:`serve_live`: the
+  ``robotmodel view`` and ``joint-state-publisher-gui`` programs, from a :class:`ViewOptions`
+  (:func:`build_viewer`, :func:`camera_spec`, :func:`frames_spec`, :func:`size_spec` read its texts).
 - :func:`screenshot` / :func:`screenshot_html`: render a page in headless Chromium to PNG.
 - :func:`build_scene`, :func:`load_mesh`: the scene as meshcat commands; one mesh file as
   triangle arrays (through the cache).
@@ -16,7 +22,10 @@ from __future__ import annotations
 
 from robotmodel.errors import ViewerError
 from robotmodel.viewer._browser import Browser, find_chromium
+from robotmodel.viewer._live import LiveViewer, serve_live
 from robotmodel.viewer._meshes import MeshData, default_cache_dir, load_mesh
+from robotmodel.viewer._options import ViewOptions, build_viewer, camera_spec, frames_spec, size_spec
+from robotmodel.viewer._program import run_joint_state_publisher_gui, run_view
 from robotmodel.viewer._scene import RobotScene, build_scene
 from robotmodel.viewer._screenshot import screenshot, screenshot_html
 from robotmodel.viewer._sliders import SliderJoint, slider_joints
@@ -26,16 +35,25 @@ __all__ = [
     "Browser",
     "FramesSpec",
     "JointCallback",
+    "LiveViewer",
     "MeshData",
     "RobotScene",
     "SliderJoint",
+    "ViewOptions",
     "Viewer",
     "ViewerError",
     "build_scene",
+    "build_viewer",
+    "camera_spec",
     "default_cache_dir",
     "find_chromium",
+    "frames_spec",
     "load_mesh",
+    "run_joint_state_publisher_gui",
+    "run_view",
     "screenshot",
     "screenshot_html",
+    "serve_live",
+    "size_spec",
     "slider_joints",
 ]

@@ -5,12 +5,13 @@ from __future__ import annotations
 import json
 import logging
 import os
+import signal
 import subprocess
-import sys
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 
 from robotmodel.errors import PackageNotFoundError, ResourceError, UntrustedInputError, XacroError
+from robotmodel.process import module_argv, spawn
 from robotmodel.resources import PathLike, record_package
 
 __all__ = ["DEFAULT_MEMORY_BYTES", "DEFAULT_TIMEOUT_S", "dependencies", "expand", "expand_string"]
@@ -122,22 +123,20 @@ def _run(
         memory_bytes=memory_bytes,
         cwd=os.getcwd(),
     )
+    # The installed package whatever the cwd (python -P); quiet on Ctrl-C, gone with its parent.
+    proc = spawn(module_argv("robotmodel.xacro._worker", orphan_signal=signal.SIGKILL), stdin=subprocess.PIPE,
+                 stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     try:
-        proc = subprocess.run(
-            [sys.executable, "-m", "robotmodel.xacro._worker"],
-            input=json.dumps(request),
-            capture_output=True,
-            text=True,
-            timeout=timeout,
-            check=False,
-        )
+        stdout, stderr = (str(out) for out in proc.communicate(json.dumps(request), timeout=timeout))
     except subprocess.TimeoutExpired:
+        proc.kill()
+        proc.communicate()
         raise XacroError(
             f"{label}: expansion did not finish within {timeout:g} s (runaway macro recursion or expansion?)"
         ) from None
     error = None
     reply: dict[str, object] = {}
-    for line in proc.stderr.splitlines():
+    for line in stderr.splitlines():
         if line.startswith('{"packages"'):
             for name, folder, how in json.loads(line)["packages"]:
                 record_package(name, Path(folder), how)
@@ -147,10 +146,12 @@ def _run(
         elif line.strip():
             _log.warning("%s", line)
     if proc.returncode == 0:
-        return proc.stdout
+        return stdout
     if error is None:
-        tail = proc.stderr.strip().splitlines()[-1:] or [f"exit status {proc.returncode}"]
-        if "MemoryError" in proc.stderr or proc.returncode < 0:
+        tail = stderr.strip().splitlines()[-1:] or [f"exit status {proc.returncode}"]
+        if proc.returncode == -signal.SIGINT:
+            error = "interrupted"
+        elif "MemoryError" in stderr or proc.returncode < 0:
             error = f"expansion exceeded the memory limit of {memory_bytes >> 20} MiB"
         else:
             error = tail[0]

@@ -5,9 +5,9 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
-from robotmodel.cli.topic_cmd import message_to_yaml
 
 from robotmodel.bus import typestore
+from robotmodel.topic import message_to_yaml
 
 # ros2 topic echo of tests/bus/peer.py's static-pub message (rosidl_runtime_py's
 # message_to_yaml: PyYAML block style, fields in message order, sequences not indented).

@@ -5,8 +5,9 @@ from __future__ import annotations
 import re
 
 import pytest
-from robotmodel.cli._static_args import USAGE as STATIC_USAGE
 from robotmodel.cli.main import main
+
+from robotmodel.tf_ros._static_args import USAGE as STATIC_USAGE
 
 LOG = r"^\[(ERROR|WARN|INFO)\] \[\d+\.\d{9}\] \[([^\]]*)\]: (.*)$"
 

@@ -13,10 +13,11 @@ import numpy as np
 import pytest
 import pytransform3d.rotations as pr
 from cli_tf.expected import EXPECTED_STATIC
-from robotmodel.cli._echo_fmt import (
+
+from robotmodel.errors import EchoArgsError
+from robotmodel.tf_ros._echo_args import (
     USAGE,
     EchoArgs,
-    EchoArgsError,
     euler_ypr,
     failure_text,
     format_echo,

@@ -8,9 +8,11 @@ import math
 import re
 
 import pytest
-from robotmodel.cli._bus_args import split_connect, strip_ros_args
-from robotmodel.cli._rosfmt import log_line, strtod_prefix
-from robotmodel.cli.view_frames_cmd import default_output_name, result_message
+
+from robotmodel.rcl import log_line, remove_ros_args
+from robotmodel.rcl._console import strtod_prefix
+from robotmodel.tf_ros._view_frames import default_output_name, result_message
+from robotmodel.tf_ros._words import split_connect
 
 _libc = ctypes.CDLL(ctypes.util.find_library("c"))
 _libc.strtod.restype = ctypes.c_double
@@ -47,7 +49,7 @@ def test_log_line_shape():
 def test_bus_words():
     assert split_connect(["a", "--connect", "tcp/1.2.3.4:7447", "b", "--connect=tcp/x:1"]) == (
         ["a", "b"], ["tcp/1.2.3.4:7447", "tcp/x:1"])
-    assert strip_ros_args(["--x", "1", "--ros-args", "-r", "__ns:=/r", "--", "--y", "2", "--ros-args", "-p", "a:=1"]) == [
+    assert remove_ros_args(["--x", "1", "--ros-args", "-r", "__ns:=/r", "--", "--y", "2", "--ros-args", "-p", "a:=1"]) == [
         "--x", "1", "--y", "2"]
 
 

@@ -11,10 +11,11 @@ import math
 import numpy as np
 import pytest
 import pytransform3d.rotations as pr
-from robotmodel.cli._static_args import (
+
+from robotmodel.errors import StaticArgsError
+from robotmodel.tf_ros._static_args import (
     DEPRECATION_WARNING,
     USAGE,
-    StaticArgsError,
     parse_static_args,
     startup_message,
     validation_errors,

@@ -20,10 +20,11 @@ import numpy as np
 import pytest
 from livebus import Proc
 from procscan import assert_none_left
-from robotmodel.cli.demo_cmd import VIEWER_CAMERA
-from robotmodel.cli.view_cmd import camera_spec
 from rosbags.highlevel import AnyReader
 from viewerhelpers import READY, is_robot_grey, png_pixels
+
+from robotmodel.demo import VIEWER_CAMERA
+from robotmodel.viewer import camera_spec
 
 DEMO = [sys.executable, "-m", "robotmodel.cli.main", "demo", "--no-browser"]
 

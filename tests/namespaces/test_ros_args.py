@@ -6,8 +6,9 @@ import subprocess
 import sys
 
 import pytest
-from robotmodel.cli._ros_args import RosArgs, RosArgsError, logger_name, split_node_words, take_ros_args
 from robotmodel.cli.main import build_parser
+
+from robotmodel.rcl import RosArgs, RosArgsError, logger_name, split_node_words, take_ros_args
 
 NODE_COMMANDS = [
     ["robot-state-publisher", "r.urdf"],

@@ -52,7 +52,7 @@ def test_invalid_urdf_for_jsp_is_one_line(tmp_path):
 def test_commands_register_without_pinocchio_or_zenoh():
     code = ("import argparse, sys\n"
             "from robotmodel.cli import jsp_cmd, rsp_cmd\n"
-            "from robotmodel.cli._common import CommandParser\n"
+            "from robotmodel.cli._parser import CommandParser\n"
             "sub = argparse.ArgumentParser().add_subparsers(parser_class=CommandParser)\n"
             "rsp_cmd.register(sub); jsp_cmd.register(sub)\n"
             "print(sorted(k for k in ('pinocchio', 'zenoh', 'robotmodel.publishers') if k in sys.modules))")

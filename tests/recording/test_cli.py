@@ -12,7 +12,8 @@ import numpy as np
 import pytest
 from recording.bagfiles import write
 from recording.test_load import DT, TICKS, expected_world_cam, scenario, stamp
-from robotmodel.cli._echo_fmt import euler_ypr
+
+from robotmodel.tf_ros._echo_args import euler_ypr
 
 
 def run(*args: str, cwd: Path | None = None) -> subprocess.CompletedProcess[str]:

@@ -14,12 +14,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 from conftest import BUNDLED
-from robotmodel.cli.view_cmd import camera_spec
 from viewerhelpers import CAMERA, READY, project
 
 from robotmodel.errors import RobotModelError
 from robotmodel.model import load
-from robotmodel.viewer import Browser, Viewer
+from robotmodel.viewer import Browser, Viewer, camera_spec
 
 DIFFBOT = BUNDLED / "diffbot.urdf.xacro"
 VIEW = [sys.executable, "-m", "robotmodel.cli.main", "view"]

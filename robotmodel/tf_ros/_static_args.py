@@ -21,12 +21,13 @@ import math
 from collections.abc import Callable, Sequence
 from typing import NamedTuple
 
-from robotmodel.cli._rosfmt import strtod_prefix
+from robotmodel.errors import StaticArgsError
+from robotmodel.rcl._console import strtod_prefix
 
 __all__ = [
     "DEPRECATION_WARNING",
+    "HELP_MORE",
     "USAGE",
-    "StaticArgsError",
     "StaticTransformSpec",
     "parse_static_args",
     "rpy_quaternion",
@@ -65,10 +66,6 @@ _QUAT_TOLERANCE = 10e-3
 
 _FLOAT_FLAGS = ("--x", "--y", "--z", "--qx", "--qy", "--qz", "--qw", "--roll", "--pitch", "--yaw")
 _STRING_FLAGS = ("--frame-id", "--child-frame-id")
-
-
-class StaticArgsError(Exception):
-    """The words do not form a valid command line; ``str()`` is ROS 2's error text."""
 
 
 class StaticTransformSpec(NamedTuple):
@@ -226,3 +223,20 @@ def startup_message(spec: StaticTransformSpec) -> str:
     qx, qy, qz, qw = (_c_float(v) for v in spec.rotation)
     return (f"Spinning until stopped - publishing transform\ntranslation: ('{x}', '{y}', '{z}')\n"
             f"rotation: ('{qx}', '{qy}', '{qz}', '{qw}')\nfrom '{spec.frame_id}' to '{spec.child_frame_id}'")
+
+# Printed after ROS 2's own usage text on --help: the forms and words robotmodel takes beyond it.
+HELP_MORE = """
+
+also accepted:
+  x y z yaw pitch roll frame_id child_frame_id
+  x y z qx qy qz qw frame_id child_frame_id
+                        ROS 2's deprecated positional forms (logged as deprecated)
+  x y z yaw pitch roll frame_id child_frame_id period_in_ms
+  x y z qx qy qz qw frame_id child_frame_id period_in_ms
+                        ROS 1 tf's forms: republish on /tf every period_in_ms,
+                        stamped one period ahead
+  --connect ENDPOINT    zenoh endpoint to connect to (repeatable)
+  --namespace NS        the node's namespace (/tf and /tf_static stay global)
+  --ros-args ... [--]   ROS 2 arguments: -r /tf_static:=TOPIC remaps a topic,
+                        -r __ns:=/NS and -r __node:=NAME move and rename the node;
+                        -p NAME:=VALUE and --params-file FILE are named in a warning"""

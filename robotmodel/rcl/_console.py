@@ -1,4 +1,4 @@
-"""What ROS's tools print besides their data: rcutils log lines and C's number parsing.
+"""What ROS's tools print besides their data: rcutils log lines (and loggers printing them), C's number parsing.
 
 The TF tools mimic ROS 2 programs, so their diagnostics look like rcutils' default console
 output (``[SEVERITY] [sec.nanosec] [logger]: message``, all severities on stderr), and
@@ -8,12 +8,13 @@ accepted; what follows is reported separately).
 
 from __future__ import annotations
 
+import logging
 import re
 import sys
 import time
 from typing import TextIO
 
-__all__ = ["log_line", "ros_log", "strtod_prefix"]
+__all__ = ["log_line", "ros_console", "ros_log", "strtod_prefix"]
 
 # strtod's grammar (decimal, hexadecimal, inf/infinity, nan with an optional tag), after
 # optional leading white space. Compiled on first use: `robotmodel --help` never needs it.
@@ -62,3 +63,28 @@ def ros_log(severity: str, logger: str, message: str, stream: TextIO | None = No
     """Write :func:`log_line` to stderr (where rcutils sends every severity) and flush."""
     out = sys.stderr if stream is None else stream
     print(log_line(severity, logger, message), file=out, flush=True)
+
+
+# rcutils' severity names for Python's levels.
+_SEVERITY = {logging.DEBUG: "DEBUG", logging.INFO: "INFO", logging.WARNING: "WARN", logging.ERROR: "ERROR",
+             logging.CRITICAL: "FATAL"}
+
+
+class _RcutilsHandler(logging.Handler):
+    def emit(self, record: logging.LogRecord) -> None:
+        try:
+            severity = _SEVERITY.get(record.levelno, record.levelname)
+            text = log_line(severity, record.name, record.getMessage(), int(record.created * 1e9))
+            print(text, file=sys.stderr, flush=True)
+        except Exception:
+            self.handleError(record)
+
+
+def ros_console(name: str) -> logging.Logger:
+    """The logger ``name`` printing INFO and above to stderr in rcutils' format, as a ROS 2 node's does."""
+    logger = logging.getLogger(name)
+    if not any(isinstance(h, _RcutilsHandler) for h in logger.handlers):
+        logger.addHandler(_RcutilsHandler())
+    logger.setLevel(logging.INFO)
+    logger.propagate = False
+    return logger

@@ -2,22 +2,32 @@
 
 from __future__ import annotations
 
-import argparse
+import os
+import random
 import re
 import signal
+import socket
 import sys
 import threading
 import time
+from collections.abc import Callable
 from datetime import datetime
 from pathlib import Path
 
-from robotmodel.cli._demo_children import Child, Children, private_bus_env
-from robotmodel.cli.demo_cmd import MAP_TO_ODOM, ROBOT, TOPICS, VIEWER_CAMERA
-
 from robotmodel.errors import RobotModelError
+from robotmodel.process import Child, Supervisor, command_argv
 from robotmodel.signals import stop_on_signals
 
-__all__ = ["Demo"]
+__all__ = ["Demo", "private_bus_env"]
+
+ROBOT = "diffbot.urdf.xacro"
+#: The recorded topics: TF, the robot, and the odometry example's own.
+TOPICS = ("/tf", "/tf_static", "/joint_states", "/robot_description", "/odom", "/cmd_vel")
+#: map → odom, as a localization node would publish it.
+MAP_TO_ODOM = ("1.0", "0.5", "0.0")
+#: The viewer's camera, in odom, before it follows base_link with this offset: above, behind and to
+#: the right of the robot as it sets off along x, close enough for the robot to fill the picture.
+VIEWER_CAMERA = "-0.6,-0.45,0.4:0,0,0"
 
 _ECHO_EVERY_S = 5.0  # how often the live tf2_echo line is printed when stdout is not a terminal
 _READY_S = 60.0
@@ -71,18 +81,38 @@ class _EchoLine:
             print(flush=True)
 
 
-class Demo:
-    """One run of ``robotmodel demo``."""
+def private_bus_env() -> dict[str, str]:
+    """The current environment with a free loopback rendezvous port, a random domain and no zenoh config.
 
-    def __init__(self, args: argparse.Namespace) -> None:
-        if not args.duration > 0:
+    The demo neither joins nor disturbs another system on this machine.
+    """
+    env = dict(os.environ)
+    for key in ("ZENOH_SESSION_CONFIG_URI", "ZENOH_ROUTER_CONFIG_URI", "ZENOH_CONFIG_OVERRIDE"):
+        env.pop(key, None)
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        env["ROBOTMODEL_ZENOH_PORT"] = str(s.getsockname()[1])
+    # Clear of 0, the domain a developer's own ROS 2 system is most likely on.
+    env["ROS_DOMAIN_ID"] = str(random.randint(120, 200))
+    env["PYTHONUNBUFFERED"] = "1"
+    return env
+
+
+class Demo:
+    """One run of ``robotmodel demo``: ``duration`` seconds, files into ``output`` (None: a fresh folder)."""
+
+    def __init__(self, *, duration: float = 35.0, output: str | None = None, browser: bool = True,
+                 time_scale: float = 1.0) -> None:
+        if not duration > 0:
             raise RobotModelError("--duration must be greater than 0")
-        if not args.time_scale > 0:
+        if not time_scale > 0:
             raise RobotModelError("--time-scale must be greater than 0")
-        self.args = args
-        self.out = _out_dir(args.output)
+        self.duration, self.browser, self.time_scale = duration, browser, time_scale
+        self.out = _out_dir(output)
         self.env = private_bus_env()
-        self.children = Children(self.env, self.out / "logs")
+        # SIGKILL when the demo dies uncleanly: a child busy shutting down its bus session when all
+        # its peers vanish at once may not act on a SIGTERM; the recording keeps every flushed chunk.
+        self.children = Supervisor(env=self.env, logs=self.out / "logs", orphan_signal=signal.SIGKILL)
         self.stop = threading.Event()
         self.echo = _EchoLine()
         self.url: str | None = None
@@ -103,12 +133,12 @@ class Demo:
         started = time.monotonic()
         try:
             self._start(robot)
-            self._run_until(started + self.args.duration)
+            self._run_until(started + self.duration)
         finally:
             self.echo.end()
             self.elapsed = time.monotonic() - started
             # view_frames and the screenshot end by themselves; stopped half-way, they did not fail.
-            cut = {c.name for c in self.children.started if c.name in _TASKS and c.popen.poll() is None}
+            cut = {c.name for c in self.children.started if c.name in _TASKS and c.poll() is None}
             codes = self.children.stop_all(last=("record",))
             for signum, handler in old.items():
                 signal.signal(signum, handler)
@@ -121,38 +151,43 @@ class Demo:
         return 0 if not failed else 1
 
     def _start(self, robot: str) -> None:
-        scale = ["--time-scale", f"{self.args.time_scale:g}"]
+        scale = ["--time-scale", f"{self.time_scale:g}"]
         c = self.children
         mcap = self.out / "demo.mcap"
-        record = c.robotmodel("record", "-o", str(mcap), *TOPICS)
+        record = self._robotmodel("record", "-o", str(mcap), *TOPICS)
         self._ready(record, r"Recording to", "record")
         self.files.append(("recording (MCAP)", mcap))
         x, y, z = MAP_TO_ODOM
-        c.robotmodel("static_transform_publisher", "--x", x, "--y", y, "--z", z, "--frame-id", "map",
+        self._robotmodel("static_transform_publisher", "--x", x, "--y", y, "--z", z, "--frame-id", "map",
                      "--child-frame-id", "odom")
-        c.robotmodel("robot_state_publisher", robot)
-        c.robotmodel("joint_state_publisher", robot, "--source-list", "/wheel_states")
-        sim = c.example("sensor_simulator", "--joint-states-topic", "/wheel_states", *scale)
+        self._robotmodel("robot_state_publisher", robot)
+        self._robotmodel("joint_state_publisher", robot, "--source-list", "/wheel_states")
+        sim = c.module("sensor_simulator", "robotmodel.examples.sensor_simulator", "--joint-states-topic",
+                       "/wheel_states", *scale)
         self._ready(sim, r"integrating", "sensor_simulator")
-        c.example("robot_controller", *scale)
-        c.robotmodel("tf2_echo", "map", "base_footprint", "1", on_line=self.echo)
+        c.module("robot_controller", "robotmodel.examples.robot_controller", *scale)
+        self._robotmodel("tf2_echo", "map", "base_footprint", "1", on_line=self.echo)
         # The viewer drives the robot as rviz would: joints from /joint_states (the wheels turn),
         # placed by /tf from odom, the camera riding along behind base_link. No frame triads:
         # their labels crowd the picture and slow a headless screenshot down.
-        view = c.robotmodel("view", robot, "--follow", "--tf", "--fixed-frame", "odom", "--frames", "none",
+        view = self._robotmodel("view", robot, "--follow", "--tf", "--fixed-frame", "odom", "--frames", "none",
                             "--track", "base_link", f"--camera={VIEWER_CAMERA}")
         found = self._ready(view, r"^(http://127\.0\.0\.1:\d+/\S*)", "view")
         self.url = found.group(1)
         print(f"viewer: {self.url}", flush=True)
-        if not self.args.no_browser:
+        if self.browser:
             import webbrowser
 
             webbrowser.open(self.url, new=2)
 
+    def _robotmodel(self, command: str, *args: str, on_line: Callable[[str], None] | None = None) -> Child:
+        """``robotmodel COMMAND ARGS`` as a child named after COMMAND."""
+        return self.children.command(command, command, *args, on_line=on_line)
+
     def _ready(self, child: Child, pattern: str, what: str) -> re.Match[str]:
         deadline = time.monotonic() + _READY_S
         found = None
-        while found is None and time.monotonic() < deadline and child.popen.poll() is None:
+        while found is None and time.monotonic() < deadline and child.poll() is None:
             if self.stop.is_set():
                 raise KeyboardInterrupt
             found = child.wait_line(pattern, 0.2)
@@ -165,16 +200,16 @@ class Demo:
     def _run_until(self, end: float) -> None:
         # view_frames listens for a few seconds early on; the screenshot is started half-way,
         # with the robot under way, and may finish after the run (it is waited for then).
-        frames_at = min(2.0, self.args.duration / 4)
-        shot_at = self.args.duration / 2
-        start = end - self.args.duration
+        frames_at = min(2.0, self.duration / 4)
+        shot_at = self.duration / 2
+        start = end - self.duration
         frames_child: Child | None = None
         shot: Child | None = None
         while not self.stop.wait(0.1):
             now = time.monotonic()
             if frames_child is None and now - start >= frames_at:
-                wait = f"{max(1.0, min(3.0, self.args.duration / 3)):g}"
-                frames_child = self.children.robotmodel("view_frames", "--wait-time", wait,
+                wait = f"{max(1.0, min(3.0, self.duration / 3)):g}"
+                frames_child = self._robotmodel("view_frames", "--wait-time", wait,
                                                         "-o", str(self.out / "frames"))
             if shot is None and now - start >= shot_at:
                 shot = self._start_screenshot()
@@ -210,7 +245,7 @@ class Demo:
     def _wait(self, child: Child, timeout: float) -> None:
         """Wait for a child that ends by itself, giving up early on Ctrl-C."""
         deadline = time.monotonic() + timeout
-        while child.popen.poll() is None and time.monotonic() < deadline and not self.stop.wait(0.1):
+        while child.poll() is None and time.monotonic() < deadline and not self.stop.wait(0.1):
             pass
 
     def _start_screenshot(self) -> Child | None:
@@ -221,8 +256,7 @@ class Demo:
         if find_chromium() is None:
             self.notes.append("no screenshot: no Chromium found (install Debian's chromium)")
             return None
-        return self.children.start("screenshot", [sys.executable, "-m", "robotmodel.cli._demo_shot", self.url,
-                                                  str(self.out / "viewer.png")])
+        return self.children.module("screenshot", "robotmodel.demo._shot", self.url, str(self.out / "viewer.png"))
 
     def _offline(self) -> None:
         import subprocess
@@ -230,9 +264,8 @@ class Demo:
         mcap = self.out / "demo.mcap"
         if not mcap.exists():
             return
-        at = f"+{round(min(self.args.duration, self.elapsed) / 2, 1):g}"  # half-way through what ran
-        argv = [sys.executable, "-m", "robotmodel.cli.main", "tf2-echo", "--bag", str(mcap), "map",
-                "base_footprint", "--time", at, "--no-progress"]
+        at = f"+{round(min(self.duration, self.elapsed) / 2, 1):g}"  # half-way through what ran
+        argv = command_argv("tf2-echo", "--bag", str(mcap), "map", "base_footprint", "--time", at, "--no-progress")
         print(f"\noffline, from the recording: where was base_footprint in map {at[1:]} s into it?", flush=True)
         print(f"$ robotmodel tf2-echo --bag {mcap} map base_footprint --time {at}", flush=True)
         done = subprocess.run(argv, env=self.env, capture_output=True, text=True, timeout=120, check=False)

@@ -21,7 +21,8 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from robotmodel.check import CheckJob, Entry, ProjectConfig
+    from robotmodel.check._project import Entry, ProjectConfig
+    from robotmodel.check._run import CheckJob
 
 __all__ = ["expand_files", "plan_checks"]
 
@@ -46,7 +47,7 @@ def expand_files(patterns: Iterable[str]) -> list[str]:
 
 
 def _entry_label(entry: Entry) -> str:
-    from robotmodel.check import display_path
+    from robotmodel.check._locations import display_path
 
     return display_path(entry.file)
 
@@ -64,7 +65,8 @@ def plan_checks(
     files each includes, None for one that does not expand (run in parallel by the caller,
     and only when a fragment needs it).
     """
-    from robotmodel.check import is_macro_only, job_args
+    from robotmodel.check._project import is_macro_only
+    from robotmodel.check._run import job_args
 
     def with_args(file: str, args: Iterable[tuple[str, str]], via: str | None = None) -> CheckJob:
         merged = dict(args)

@@ -11,12 +11,13 @@ import math
 from collections.abc import Sequence
 from typing import NamedTuple
 
-from robotmodel.cli._rosfmt import strtod_prefix
+from robotmodel.errors import EchoArgsError
+from robotmodel.rcl._console import strtod_prefix
 
 __all__ = [
+    "HELP_MORE",
     "USAGE",
     "EchoArgs",
-    "EchoArgsError",
     "euler_ypr",
     "failure_text",
     "format_echo",
@@ -34,15 +35,6 @@ USAGE = (
 
 # Largest finite float32: std::stof reports anything beyond it as out of range.
 _FLT_MAX = 3.4028234663852886e38
-
-
-class EchoArgsError(Exception):
-    """A bad command line: ``str()`` is the text to print, ``code`` the exit code tf2_echo uses."""
-
-    def __init__(self, message: str, code: int, to_stdout: bool = False) -> None:
-        super().__init__(message)
-        self.code = code
-        self.to_stdout = to_stdout
 
 
 class EchoArgs(NamedTuple):
@@ -146,3 +138,24 @@ def failure_text(now_seconds: float, error: str, frames_as_string: str, fixed: b
 
 def _cpp_default_float(value: float) -> str:
     return f"{value:g}"
+
+# Printed after tf2_echo's own usage text on --help: the words robotmodel takes beyond ROS's.
+HELP_MORE = """
+robotmodel also takes:
+  --connect ENDPOINT   zenoh endpoint to connect to (repeatable)
+  --namespace NS       the node's namespace (/tf and /tf_static stay global)
+  --ros-args ... [--]  ROS 2 arguments: -r /tf:=TOPIC remaps a topic, -r __ns:=/NS and
+                       -r __node:=NAME move and rename the node; -p NAME:=VALUE and
+                       --params-file FILE are named in a warning (tf2_echo has no parameters)
+
+From a recording instead of the bus (ROS 1 .bag, ROS 2 bag folder, .db3 or .mcap):
+  tf2_echo --bag FILE source_frame target_frame [echo_rate] [--time T | --every DT] [--urdf FILE]
+  --bag FILE           read TF from this recording
+  --time T             the transform at T: seconds since the epoch, or +S for S seconds
+                       after the first recorded transform (exit 1 if it cannot be looked up)
+  --every DT           the transform every DT seconds of the recording
+                       (default 1/echo_rate: once per recorded second)
+  --urdf FILE          the robot whose /joint_states give TF when the recording has no /tf
+                       (default: the recorded /robot_description)
+  --no-progress        no progress bar on stderr
+"""

@@ -9,14 +9,13 @@ failure block at that time; with ``--time`` the exit code is then 1.
 
 from __future__ import annotations
 
-import argparse
 import sys
 from collections.abc import Sequence
 
-from robotmodel.cli._bag_args import BagWordsError, load_bag, parse_seconds_ns
-from robotmodel.cli._echo_fmt import EchoArgs, failure_text, format_echo
-
+from robotmodel.errors import EchoArgsError
 from robotmodel.recording import sample_times
+from robotmodel.tf_ros._echo_args import EchoArgs, failure_text, format_echo
+from robotmodel.tf_ros._words import parse_seconds_ns
 
 __all__ = ["run_bag_echo"]
 
@@ -25,37 +24,42 @@ _NS = 1_000_000_000
 
 def _times(start: int, end: int, options: dict[str, str | bool], rate_hz: float) -> tuple[Sequence[int], bool]:
     if "time" in options and "every" in options:
-        raise BagWordsError("give --time or --every, not both")
+        raise EchoArgsError("robotmodel tf2-echo: error: give --time or --every, not both", 2)
     text = options.get("time")
     if isinstance(text, str):
         if text.startswith("+"):
             t = start + parse_seconds_ns(text[1:], "--time", signed=True)
             if t >= 2**63:
-                raise BagWordsError(f"--time {text}: beyond tf2's time range from the first transform")
+                raise EchoArgsError(f"robotmodel tf2-echo: error: --time {text}: beyond tf2's time range from the "
+                                    "first transform", 2)
             return [t], True
         return [parse_seconds_ns(text, "--time")], True
     every = options.get("every")
     step = parse_seconds_ns(every, "--every") if isinstance(every, str) else round(_NS / rate_hz)
     if step <= 0:
-        raise BagWordsError("--every must be greater than 0")
+        raise EchoArgsError("robotmodel tf2-echo: error: --every must be greater than 0", 2)
     if end == 0:  # static transforms only: one answer, valid at any time
         return [0], False
     return sample_times(start, end, step, where=str(options["bag"])), False
 
 
+def _text(value: str | bool | None) -> str | None:
+    return value if isinstance(value, str) else None
+
+
 def run_bag_echo(echo: EchoArgs, options: dict[str, str | bool]) -> int:
     """Load the recording, then print the transform at each requested time."""
     from robotmodel.errors import TransformException
+    from robotmodel.recording import load_recording
 
-    args = argparse.Namespace(bag=options["bag"], urdf=options.get("urdf"),
-                              no_progress=bool(options.get("no_progress")))
     try:
         _times(0, 0, options, echo.rate_hz)  # check the words before a long load
-        loaded = load_bag(args)
+        loaded = load_recording(str(options["bag"]), robot=_text(options.get("urdf")),
+                                progress=False if options.get("no_progress") else None)
         times, single = _times(loaded.start_ns, loaded.end_ns, options, echo.rate_hz)
-    except BagWordsError as exc:
-        print(f"robotmodel tf2-echo: error: {exc}", file=sys.stderr)
-        return 2
+    except EchoArgsError as exc:
+        print(exc, file=sys.stderr)
+        return exc.code
     buffer = loaded.buffer
     printed = False
     failed = False

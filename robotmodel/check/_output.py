@@ -13,7 +13,7 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
-    from robotmodel.check import FileReport
+    from robotmodel.check._run import FileReport
 
 __all__ = ["json_object", "summary", "text_lines"]
 
@@ -61,7 +61,7 @@ def _plural(n: int, word: str) -> str:
 
 def summary(reports: Sequence[FileReport], unchecked: Sequence[FileReport]) -> str:
     """One line: how many checks ran, passed and failed, the error and warning totals, fragments left out."""
-    from robotmodel.check import Severity
+    from robotmodel.check._lint import Severity
 
     every = [*reports, *unchecked]
     failed = sum(1 for r in reports if not r.ok)

@@ -1,4 +1,4 @@
-"""ROS 2 arguments for every node-running command: ``--ros-args ... [--]`` blocks, read as rcl reads them.
+"""ROS 2 arguments for every node: ``--ros-args ... [--]`` blocks, read as rcl reads them.
 
 - ``-r``/``--remap`` rules, rcl's syntax and semantics (see :mod:`robotmodel.bus._remap`):
   ``__ns:=/ns`` (fully qualified) and ``__node:=name`` (or ``__name:=``) move and rename the
@@ -9,7 +9,7 @@
   :class:`robotmodel.bus.Node` (``remappings=``), so /tf, /tf_static, joint_states and
   robot_description all follow them. A malformed rule stops the command with rcl's text.
 - ``-p``/``--param [node:]name:=value`` and ``--params-file FILE``: parameter overrides, typed
-  and merged as rcl and rclcpp do (:mod:`robotmodel.cli._ros_params`: within one node pattern
+  and merged as rcl and rclcpp do (:mod:`robotmodel.rcl._params`: within one node pattern
   the value given last wins). robot-state-publisher and joint-state-publisher map them onto
   their settings (the parameter wins over the same setting's ``--flag``, as ``__ns`` wins
   over ``--namespace``); other commands say which overrides they ignore.
@@ -25,19 +25,18 @@ absolute ones such as ``/tf`` do not, unless a remap rule says so.
 
 from __future__ import annotations
 
-import argparse
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
+from robotmodel.errors import RosArgsError
+
 __all__ = [
     "RosArgs",
-    "RosArgsError",
-    "add_node_arguments",
     "logger_name",
     "node_namespace",
     "node_params",
-    "settle",
+    "remove_ros_args",
     "split_node_words",
     "split_ros_words",
     "take_ros_args",
@@ -52,10 +51,6 @@ _PARAM_FLAGS = ("-p", "--param")
 _SWITCHES = frozenset(f"--{on}-{what}-logs" for on in ("enable", "disable") for what in ("rosout", "stdout",
                                                                                           "external-lib"))
 _SEVERITIES = frozenset({"UNSET", "DEBUG", "INFO", "WARN", "WARNING", "ERROR", "FATAL"})
-
-
-class RosArgsError(ValueError):
-    """A ROS argument or namespace that rcl (or rclpy) would refuse; the text is one line."""
 
 
 @dataclass(frozen=True)
@@ -111,7 +106,7 @@ def take_ros_args(words: Sequence[str], node_name: str | None = None) -> tuple[R
     default name, against which ``node:``-prefixed ``__ns``/``__node`` rules are matched
     (None: all apply). Params files are read here, so a bad one stops the command early.
     """
-    from robotmodel.cli._ros_params import file_entries, rule_entry
+    from robotmodel.rcl._params import param_file_entries, param_rule_entry
 
     rest: list[str] = []
     found: dict[str, str] = {}
@@ -138,9 +133,9 @@ def take_ros_args(words: Sequence[str], node_name: str | None = None) -> tuple[R
             if word in _REMAP_FLAGS:
                 _rule(word, value, node_name, found, remaps)
             elif word in _PARAM_FLAGS:
-                params.append(rule_entry(word, value))
+                params.append(param_rule_entry(word, value))
             elif word == "--params-file":
-                params.extend(file_entries(word, value))
+                params.extend(param_file_entries(word, value))
             elif word == "--log-level" and value.rpartition(":=")[2].upper() not in _SEVERITIES:
                 raise RosArgsError(f"Couldn't parse log level: '{word} {value}'. Error: Argument does not use a "
                                    "valid severity level")
@@ -209,53 +204,40 @@ def split_node_words(words: Sequence[str], node_name: str | None = None) -> tupl
 
 def node_params(ros: RosArgs, namespace: str, name: str) -> dict[str, Any]:
     """The parameter overrides the node ``namespace``/``name`` gets (matched on its final FQN)."""
-    from robotmodel.cli._ros_params import for_node
+    from robotmodel.rcl._params import params_for_node
 
-    found: dict[str, Any] = for_node(ros.params, namespace.rstrip("/") + "/" + name)
+    found: dict[str, Any] = params_for_node(ros.params, namespace.rstrip("/") + "/" + name)
     return found
 
 
 def warn_ignored_params(ros: RosArgs, namespace: str, name: str) -> None:
     """For commands with no parameters: one rcutils WARN line per override the node would get."""
-    from robotmodel.cli._ros_params import warn_unused
-    from robotmodel.cli._rosfmt import ros_log
+    from robotmodel.rcl._console import ros_log
+    from robotmodel.rcl._params import warn_unused_params
 
-    warn_unused(node_params(ros, namespace, name), lambda _n: False,
+    warn_unused_params(node_params(ros, namespace, name), lambda _n: False,
                 lambda text: ros_log("WARN", logger_name(namespace, name), text),
                 {"use_sim_time": "there is no /clock here", "qos_overrides": "QoS overrides are not read here"})
-
-
-def add_node_arguments(parser: argparse.ArgumentParser, node_name: str) -> None:
-    """Give a :class:`robotmodel.cli._common.CommandParser` ``--namespace`` and ``--ros-args`` blocks.
-
-    ``node_name`` is the node's default name (``node:``-prefixed rules for others are ignored).
-    After parsing, ``args.namespace`` is the node's absolute namespace and ``args.node_name``
-    the ``__node`` override (or None); see :func:`settle`.
-    """
-    parser.takes_ros_args = True  # type: ignore[attr-defined]
-    parser.ros_node_name = node_name  # type: ignore[attr-defined]
-    parser.add_argument("--namespace", metavar="NS", default=None,
-                        help="the node's namespace ('r1' means /r1): relative topics such as joint_states "
-                        "and robot_description move under it, /tf and /tf_static do not. ROS 2's "
-                        "'--ros-args -r __ns:=/r1' (and -r __node:=NAME) also work, and win")
-    parser.epilog = ((parser.epilog or "") + " ROS 2 arguments (--ros-args ... [--]) may follow: -r FROM:=TO "
-                     "remaps a topic of this node (-r joint_states:=/arm/joint_states, -r /tf:=/r1/tf), "
-                     "-r __ns:=/NS and -r __node:=NAME move and rename it, -p NAME:=VALUE and "
-                     "--params-file FILE set parameters (merged as rclcpp merges them; one this "
-                     "command has no use for is named in a warning).").strip()
-
-
-def settle(parsed: argparse.Namespace, ros: RosArgs) -> None:
-    """Replace ``parsed.namespace`` by the node's absolute namespace; set ``parsed.node_name`` and ``parsed.ros``.
-
-    ``parsed.ros`` keeps the topic remaps (for ``Node(remappings=parsed.ros.remaps)``) and
-    the parameter overrides (:func:`node_params`).
-    """
-    parsed.namespace = node_namespace(getattr(parsed, "namespace", None), ros)
-    parsed.node_name = ros.node_name
-    parsed.ros = ros
 
 
 def logger_name(namespace: str, node_name: str) -> str:
     """The node's logger name as rcl forms it: namespace tokens and name joined by '.' (``r1.rsp``)."""
     return ".".join([*namespace.strip("/").split("/"), node_name]) if namespace != "/" else node_name
+
+
+def remove_ros_args(words: Sequence[str]) -> list[str]:
+    """The words without ROS's own arguments, as ``rclpy.utilities.remove_ros_args`` leaves them.
+
+    Each ``--ros-args`` block runs to a ``--`` (dropped too) or to the end. The blocks are
+    dropped unread; :func:`take_ros_args` reads them (and refuses what rcl refuses).
+    """
+    rest: list[str] = []
+    inside = False
+    for word in words:
+        if inside:
+            inside = word != "--"
+        elif word == "--ros-args":
+            inside = True
+        else:
+            rest.append(word)
+    return rest

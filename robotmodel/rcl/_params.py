@@ -13,8 +13,8 @@
   ``joint_state_publisher:`` entry beats a ``-p`` that came before that table appeared
   (``-p joint_state_publisher:rate:=20`` always lands in the node's own table).
 
-Commands then read their settings with :func:`typed`, which refuses a wrong type with
-rclcpp's text, and :func:`warn_unused` names the overrides they have no use for.
+Commands then read their settings with :func:`typed_param`, which refuses a wrong type with
+rclcpp's text, and :func:`warn_unused_params` names the overrides they have no use for.
 """
 
 from __future__ import annotations
@@ -25,13 +25,23 @@ from collections.abc import Callable, Iterable, Mapping
 from pathlib import Path
 from typing import Any
 
-from robotmodel.cli._ros_args import RosArgsError
+from robotmodel.errors import RosArgsError
 
-__all__ = ["Entry", "Value", "file_entries", "for_node", "rule_entry", "type_name", "typed", "warn_unused"]
+__all__ = [
+    "ParamEntry",
+    "ParamValue",
+    "is_param_name",
+    "param_file_entries",
+    "param_rule_entry",
+    "param_type_name",
+    "params_for_node",
+    "typed_param",
+    "warn_unused_params",
+]
 
-Value = bool | int | float | str | tuple[bool, ...] | tuple[int, ...] | tuple[float, ...] | tuple[str, ...]
+ParamValue = bool | int | float | str | tuple[bool, ...] | tuple[int, ...] | tuple[float, ...] | tuple[str, ...]
 #: (node pattern, parameter name, value), in command-line order.
-Entry = tuple[str, str, Value]
+ParamEntry = tuple[str, str, ParamValue]
 
 _TOKEN = r"[A-Za-z_][A-Za-z0-9_]*"
 _PARAM_NAME = re.compile(rf"^{_TOKEN}(\.{_TOKEN})*$")
@@ -68,7 +78,7 @@ def _scalar(text: str, quoted: bool, tagged_str: bool) -> bool | int | float | s
     return text
 
 
-def type_name(value: Value) -> str:
+def param_type_name(value: ParamValue) -> str:
     """Rclcpp's name of a value's parameter type (``double``, ``string_array``, ...)."""
     kinds = {bool: "bool", int: "integer", float: "double", str: "string"}
     if isinstance(value, tuple):
@@ -104,7 +114,7 @@ class _Events:
             self.take()
         return not isinstance(self.peek(), (yaml.DocumentEndEvent, yaml.StreamEndEvent))
 
-    def value(self) -> Value:
+    def value(self) -> ParamValue:
         import yaml
 
         event = self.take()
@@ -121,7 +131,7 @@ class _Events:
                     raise ValueError(f"Sequences can only hold scalars, at line {item.start_mark.line + 1}")
                 value = self._scalar(item)
                 if items and type(value) is not type(items[0]):
-                    raise ValueError(f"Sequence should be of same type. Value type '{type_name(value)}' do not "
+                    raise ValueError(f"Sequence should be of same type. Value type '{param_type_name(value)}' do not "
                                      f"belong at line_num {item.start_mark.line + 1}")
                 items.append(value)
             self.take()
@@ -134,6 +144,11 @@ class _Events:
         if not quoted and not event.value and event.tag is None:
             raise ValueError(f"No value at line {event.start_mark.line + 1}")
         return _scalar(event.value, quoted, event.tag in ("tag:yaml.org,2002:str", "!!str"))
+
+
+def is_param_name(name: str) -> bool:
+    """Whether rcl accepts ``name`` as a parameter name (tokens joined by dots: ``zeros.j1``)."""
+    return _PARAM_NAME.fullmatch(name) is not None
 
 
 def _node_and_name(flag: str, rule: str) -> tuple[str, str, str]:
@@ -153,7 +168,7 @@ def _node_and_name(flag: str, rule: str) -> tuple[str, str, str]:
     return node, name, text
 
 
-def rule_entry(flag: str, rule: str) -> Entry:
+def param_rule_entry(flag: str, rule: str) -> ParamEntry:
     """One ``-p [node:]name:=value`` rule; raises RosArgsError with rcl's text."""
     node, name, text = _node_and_name(flag, rule)
     try:
@@ -166,7 +181,7 @@ def rule_entry(flag: str, rule: str) -> Entry:
     return node, name, value
 
 
-def _params(events: _Events, node: str, prefix: str, out: list[Entry]) -> None:
+def _params(events: _Events, node: str, prefix: str, out: list[ParamEntry]) -> None:
     import yaml
 
     while not isinstance(events.peek(), yaml.MappingEndEvent):
@@ -181,7 +196,7 @@ def _params(events: _Events, node: str, prefix: str, out: list[Entry]) -> None:
     events.take()
 
 
-def _nodes(events: _Events, parts: list[str], out: list[Entry]) -> None:
+def _nodes(events: _Events, parts: list[str], out: list[ParamEntry]) -> None:
     import yaml
 
     while not isinstance(events.peek(), yaml.MappingEndEvent):
@@ -201,7 +216,7 @@ def _nodes(events: _Events, parts: list[str], out: list[Entry]) -> None:
     events.take()
 
 
-def file_entries(flag: str, path: str) -> list[Entry]:
+def param_file_entries(flag: str, path: str) -> list[ParamEntry]:
     """The overrides of a ROS 2 params file, in file order; raises RosArgsError with rcl's text."""
     import yaml
 
@@ -210,7 +225,7 @@ def file_entries(flag: str, path: str) -> list[Entry]:
         text = Path(path).read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError):
         raise RosArgsError(f"{where} Error opening YAML file") from None
-    out: list[Entry] = []
+    out: list[ParamEntry] = []
     try:
         events = _Events(text)
         if events.skip_to_content():
@@ -227,23 +242,23 @@ def _matches(pattern: str, fqn: str) -> bool:
     return re.fullmatch(name.replace("/*", r"(/\w+)"), fqn) is not None
 
 
-def for_node(entries: Iterable[Entry], fqn: str) -> dict[str, Value]:
+def params_for_node(entries: Iterable[ParamEntry], fqn: str) -> dict[str, ParamValue]:
     """The overrides a node of fully qualified name ``fqn`` gets, as rclcpp merges them.
 
     rcl keeps one table per node pattern, in order of first appearance, a later value of a
     name replacing the earlier one in place; rclcpp applies the matching tables in order.
     """
-    tables: dict[str, dict[str, Value]] = {}
+    tables: dict[str, dict[str, ParamValue]] = {}
     for node, name, value in entries:
         tables.setdefault(node, {})[name] = value
-    out: dict[str, Value] = {}
+    out: dict[str, ParamValue] = {}
     for node, table in tables.items():
         if _matches(node, fqn):
             out.update(table)
     return out
 
 
-def typed(values: Mapping[str, Value], name: str, declared: str, *also: str) -> Value | None:
+def typed_param(values: Mapping[str, ParamValue], name: str, declared: str, *also: str) -> ParamValue | None:
     """The override of ``name`` if any, checked against its declared rclcpp type (or ``also`` ones).
 
     A wrong type raises RosArgsError with rclcpp's text (InvalidParameterTypeException).
@@ -251,14 +266,14 @@ def typed(values: Mapping[str, Value], name: str, declared: str, *also: str) -> 
     if name not in values:
         return None
     value = values[name]
-    got = type_name(value)
+    got = param_type_name(value)
     if got == declared or got in also or (value == () and declared.endswith("_array")):
         return value
     raise RosArgsError(f"parameter '{name}' has invalid type: Wrong parameter type, parameter {{{name}}} is of type "
                        f"{{{declared}}}, setting it to {{{got}}} is not allowed.")
 
 
-def warn_unused(values: Mapping[str, Value], used: Callable[[str], bool], warn: Callable[[str], None],
+def warn_unused_params(values: Mapping[str, ParamValue], used: Callable[[str], bool], warn: Callable[[str], None],
                 why: Mapping[str, str] | None = None) -> None:
     """Say once per name which overrides the command has no use for (ROS would keep them unread)."""
     for name in values:

@@ -1,0 +1,160 @@
+"""robot_state_publisher and joint_state_publisher as programs: ROS parameters in, a node on the bus until stopped.
+
+The ``robotmodel robot-state-publisher`` and ``joint-state-publisher`` commands are
+:func:`run_robot_state_publisher` and :func:`run_joint_state_publisher`; the node's
+``--ros-args`` parameters map onto the publishers' settings as ROS's nodes read them (a
+parameter wins over the same setting's flag; one with no use here is named in a warning),
+and :func:`jsp_settings` is that mapping for joint_state_publisher (its GUI uses it too).
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+from collections.abc import Callable, Mapping, Sequence
+from typing import TYPE_CHECKING, Any
+
+from robotmodel.errors import RosArgsError
+
+if TYPE_CHECKING:
+    from robotmodel.rcl import RosArgs
+
+__all__ = ["jsp_settings", "run_joint_state_publisher", "run_robot_state_publisher"]
+
+_JSP = "joint_state_publisher"
+_RSP = "robot_state_publisher"
+_BOOLS = ("publish_default_positions", "publish_default_velocities", "publish_default_efforts", "use_mimic_tags",
+          "use_smallest_joint_limits")
+_WHY = {
+    "dependent_joints": "joint_state_publisher replaces it with the URDF's mimic tags once a robot is loaded",
+    "robot_description": "joint_state_publisher reads the robot from FILE or the robot_description topic",
+    "use_sim_time": "there is no /clock here",
+    "qos_overrides": "QoS overrides are not read here",
+}
+_RSP_PARAMS = frozenset({"robot_description", "publish_frequency", "ignore_timestamp", "frame_prefix"})
+_RSP_WHY = {"use_sim_time": "there is no /clock here", "qos_overrides": "QoS overrides are not read here"}
+
+
+def jsp_settings(values: Mapping[str, Any], warn: Callable[[str], None], *, rate: float = 10.0,
+                 zeros: Mapping[str, float] | None = None, source_list: Sequence[str] = ()) -> dict[str, Any]:
+    """JointStatePublisher's keyword settings: the given ones, then the parameter overrides ``values`` over them.
+
+    Raises RosArgsError (rclcpp's text) for a wrong type; ``warn`` hears of the overrides not used.
+    """
+    from robotmodel.rcl import RosArgsError, typed_param, warn_unused_params
+
+    # joint_state_publisher declares its parameters from the overrides (rclpy), so a number is a number.
+    given = typed_param(values, "rate", "integer", "double")
+    if given is not None:
+        if not (isinstance(given, (int, float)) and given > 0):
+            raise RosArgsError(f"rate must be a positive number of Hz, got '{given}'")
+        rate = float(given)
+    settings: dict[str, Any] = {"rate": rate, "zeros": dict(zeros or {}), "source_list": list(source_list)}
+    for flag in _BOOLS:
+        value = typed_param(values, flag, "bool")
+        if value is not None:
+            settings[flag] = value
+    delta = typed_param(values, "delta", "double", "integer")
+    if isinstance(delta, (int, float)):
+        settings["delta"] = float(delta)
+    sources = typed_param(values, "source_list", "string_array")
+    if isinstance(sources, tuple):
+        settings["source_list"] = [str(topic) for topic in sources]
+    for param in values:
+        zero = typed_param(values, param, "double", "integer") if param.startswith("zeros.") else None
+        if isinstance(zero, (int, float)):
+            settings["zeros"][param.removeprefix("zeros.")] = float(zero)
+    warn_unused_params(values, lambda n: n in _BOOLS or n in ("rate", "delta", "source_list") or n.startswith("zeros."),
+                warn, _WHY)
+    return settings
+
+
+def _load(file: str | None, mappings: Mapping[str, str], package_paths: Sequence[str | os.PathLike[str]],
+          untrusted: bool) -> Any:
+    from robotmodel.model import load_source
+
+    if file is None:
+        return None
+    return load_source(file, mappings, package_paths=package_paths, untrusted=untrusted)[0]
+
+
+def run_joint_state_publisher(file: str | None = None, mappings: Mapping[str, str] | None = None, *,
+                              package_paths: Sequence[str | os.PathLike[str]] = (), untrusted: bool = False,
+                              rate: float = 10.0, zeros: Mapping[str, float] | None = None,
+                              source_list: Sequence[str] = (), connect: Sequence[str] = (), namespace: str = "/",
+                              ros: RosArgs | None = None) -> int:
+    """joint_state_publisher until SIGINT/SIGTERM: the robot from ``file`` ('-': stdin) or the topic.
+
+    The flags' settings (``rate``, ``zeros``, ``source_list``) give way to the node's ROS
+    parameters in ``ros``; a parameter of the wrong type prints rclcpp's text and gives 2.
+    Returns the exit code.
+    """
+    from robotmodel.bus import Node
+    from robotmodel.publishers._jsp import JointStatePublisher
+    from robotmodel.rcl import RosArgs, logger_name, node_params, ros_console
+    from robotmodel.signals import stop_on_signals
+
+    ros = ros or RosArgs()
+    name = ros.node_name or _JSP
+    log = ros_console(logger_name(namespace, name))
+    try:
+        settings = jsp_settings(node_params(ros, namespace, name), log.warning, rate=rate, zeros=dict(zeros or {}),
+                                source_list=source_list)
+    except RosArgsError as exc:
+        print(f"robotmodel joint-state-publisher: error: {exc}", file=sys.stderr)
+        return 2
+    desc = _load(file, mappings or {}, package_paths, untrusted)
+    stop = stop_on_signals()
+    # joint_states, robot_description and relative --source-list topics resolve under the namespace.
+    with Node(name, namespace, connect=list(connect), remappings=ros.remaps) as node, JointStatePublisher(
+            desc, bus=node, logger=log, **settings):
+        stop.wait()
+    return 0
+
+
+def run_robot_state_publisher(file: str | None = None, mappings: Mapping[str, str] | None = None, *,
+                              package_paths: Sequence[str | os.PathLike[str]] = (), untrusted: bool = False,
+                              publish_frequency: float = 20.0, frame_prefix: str = "",
+                              ignore_timestamp: bool = False, connect: Sequence[str] = (), namespace: str = "/",
+                              ros: RosArgs | None = None) -> int:
+    """robot_state_publisher until SIGINT/SIGTERM: the robot from ``file`` ('-': stdin) or ``-p robot_description``.
+
+    The node's ROS parameters in ``ros`` win over the keyword settings; a parameter of the
+    wrong type prints rclcpp's text and gives 2; no robot at all logs RSP's FATAL line and
+    gives 1. Returns the exit code.
+    """
+    from robotmodel.bus import Node
+    from robotmodel.publishers._rsp import RobotStatePublisher
+    from robotmodel.publishers._rsp_state import check_publish_frequency
+    from robotmodel.rcl import RosArgs, logger_name, node_params, ros_console, typed_param, warn_unused_params
+    from robotmodel.signals import stop_on_signals
+
+    ros = ros or RosArgs()
+    name = ros.node_name or _RSP
+    log = ros_console(logger_name(namespace, name))
+    settings: dict[str, Any] = {"publish_frequency": publish_frequency, "ignore_timestamp": ignore_timestamp,
+                                "frame_prefix": frame_prefix}
+    try:
+        values = node_params(ros, namespace, name)
+        for param, kind in (("publish_frequency", "double"), ("ignore_timestamp", "bool"),
+                            ("frame_prefix", "string")):
+            value = typed_param(values, param, kind)
+            if value is not None:
+                settings[param] = value
+        text = typed_param(values, "robot_description", "string")
+        warn_unused_params(values, lambda n: n in _RSP_PARAMS, log.warning, _RSP_WHY)
+    except RosArgsError as exc:
+        print(f"robotmodel robot-state-publisher: error: {exc}", file=sys.stderr)
+        return 2
+    check_publish_frequency(settings["publish_frequency"])
+    # As RSP before 3.5.1: the parameter is the robot; FILE is the fallback when it is empty.
+    desc: Any = str(text) if text else _load(file, mappings or {}, package_paths, untrusted)
+    if desc is None:
+        log.critical("robot_description parameter must not be empty")
+        return 1
+    stop = stop_on_signals()
+    # RSP's topics are relative (joint_states, robot_description): they follow the namespace; /tf does not.
+    with Node(name, namespace, connect=list(connect), remappings=ros.remaps) as node, RobotStatePublisher(
+            desc, bus=node, logger=log, **settings):
+        stop.wait()
+    return 0
