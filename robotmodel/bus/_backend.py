@@ -352,6 +352,7 @@ class Backend(ABC):
 BACKENDS: dict[str, str] = {
     "inprocess": "robotmodel.bus._inprocess:InProcessBackend",
     "zenoh": "robotmodel.bus._zenoh:ZenohBackend",
+    "dds": "robotmodel.bus._dds:DdsBackend",
 }
 
 
