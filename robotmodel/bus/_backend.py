@@ -177,7 +177,9 @@ class Entity:
     is the fully qualified topic, ``typename`` the ROS type (``pkg/msg/Name``), ``type_hash``
     its RIHS01 text where the wire has one, ``qos`` the endpoint's QoS and ``gid`` the
     16-byte id its samples carry. ``node_key`` tells apart nodes of one name (zenoh: session
-    and node id; ROS 1: the node's URI).
+    and node id; ROS 1: the node's URI; DDS: participant GID and the node's place in it); it
+    is '' for an endpoint whose node the wire does not know (DDS: no ``ros_discovery_info``
+    names it; rmw shows it under ``_NODE_NAME_UNKNOWN_``).
     """
 
     kind: EntityKind
