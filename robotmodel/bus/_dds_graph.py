@@ -133,12 +133,12 @@ class DdsGraph:
             if self._closed:
                 return
             t = store.types
-            Gid = t["rmw_dds_common/msg/Gid"]
+            gid_type = t["rmw_dds_common/msg/Gid"]
 
             def gid(raw: bytes) -> Any:
                 import numpy as np
 
-                return Gid(data=np.frombuffer(raw.ljust(16, b"\0")[:16], dtype=np.uint8).copy())
+                return gid_type(data=np.frombuffer(raw.ljust(16, b"\0")[:16], dtype=np.uint8).copy())
 
             info = t[_INFO_TYPE](gid=gid(self.gid), node_entities_info_seq=[
                 t["rmw_dds_common/msg/NodeEntitiesInfo"](
@@ -177,7 +177,7 @@ class DdsGraph:
     def _on_info(self, data: bytes) -> None:
         try:
             msg = _store().deserialize_cdr(data, _INFO_TYPE)
-        except Exception as exc:  # noqa: BLE001 - a peer's bad sample must not stop the graph
+        except Exception as exc:
             self._warner.warn("info", f"ignored a malformed '{DISCOVERY_TOPIC}' sample: {exc}")
             return
         pgid = bytes(msg.gid.data)
@@ -239,12 +239,6 @@ class DdsGraph:
         with self._lock:
             if callback in self._watchers:
                 self._watchers.remove(callback)
-
-    def publishers_of(self, topic: str) -> dict[str, bytes]:
-        """The DDS type names of the publishers seen on a ROS topic, each with one writer's GID."""
-        with self._lock:
-            return {ep.typename: egid for egid, ep in self._endpoints.items()
-                    if ep.kind is EntityKind.PUBLISHER and ep.topic == topic}
 
     def close(self) -> None:
         """Stop following the graph and withdraw this session's discovery writer."""

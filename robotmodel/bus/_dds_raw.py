@@ -19,11 +19,10 @@ Only the DDS wire uses this module (it is below the backend seam).
 
 from __future__ import annotations
 
+import ctypes
 import threading
 from collections.abc import Callable
 from typing import Any
-
-import ctypes
 
 from cyclonedds._clayer import ddspy_take
 from cyclonedds.core import DDSException, Entity, Listener

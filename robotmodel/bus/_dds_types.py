@@ -22,7 +22,7 @@ from typing import Any
 from cyclonedds.idl import IdlStruct, make_idl_struct
 from cyclonedds.idl import types as t
 
-from robotmodel.bus._names import dds_type_name, ros_type_name
+from robotmodel.bus._names import dds_type_name
 from robotmodel.errors import BusError
 
 __all__ = [
@@ -107,11 +107,7 @@ def idl_type(typename: str) -> type[IdlStruct]:
         if not members:
             # rosidl gives an empty message one member, so its IDL struct is not empty.
             members = {"structure_needs_at_least_one_member": t.uint8}
-        cls = make_idl_struct(dds_name.replace("::", "_"), dds_name, members)
+        cls: type[IdlStruct] = make_idl_struct(dds_name.replace("::", "_"), dds_name, members)
         _cache[typename] = cls
         return cls
 
-
-def typename_of_dds(dds_name: str) -> str:
-    """The ROS type name of a DDS type name (unchanged when it is not a ROS one)."""
-    return ros_type_name(dds_name)

@@ -22,7 +22,6 @@ from __future__ import annotations
 import json
 import sys
 import threading
-import time
 
 import rclpy
 from rclpy.node import Node

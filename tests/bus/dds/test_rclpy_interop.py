@@ -165,7 +165,7 @@ def test_an_incompatible_real_rclpy_publisher_gives_rclpys_warning_here(rclpy: A
         got = Inbox()
         sub = Node("rm_strict", context=ctx).create_subscription(STRING, "/qos_probe", got,
                                                                  QoS(10, Reliability.RELIABLE))
-        (text, *_) = warned.wait(lambda items: bool(items), "incompatible-QoS warning")
+        (text, *_) = warned.wait(bool, "incompatible-QoS warning")
     finally:
         log.removeHandler(handler)
     assert text == ("New publisher discovered on topic '/qos_probe', offering incompatible QoS. "
