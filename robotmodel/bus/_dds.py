@@ -15,7 +15,8 @@ published on its topic, for every type the typestore knows.
 
 Discovery stays on this machine unless ``ROS_AUTOMATIC_DISCOVERY_RANGE`` or
 ``ROS_STATIC_PEERS`` widen it (:func:`._dds_qos.cyclone_config`); Cyclone reads that
-configuration once per domain and process, when the first session of the domain opens.
+configuration when the first session of a domain in this process opens, and lets it go
+with the last one.
 Parameters are node-local.
 """
 
@@ -26,7 +27,7 @@ import threading
 from collections.abc import Callable, Sequence
 from typing import Any
 
-from cyclonedds.core import Listener, Policy, Qos
+from cyclonedds.core import DDSException, Listener, Policy, Qos
 from cyclonedds.domain import Domain, DomainParticipant
 from cyclonedds.pub import DataWriter
 from cyclonedds.sub import DataReader
@@ -60,15 +61,30 @@ from robotmodel.errors import BusError
 __all__ = ["DdsBackend"]
 
 log = logging.getLogger("robotmodel.bus")
-_DOMAINS: dict[int, Any] = {}
+# Per domain id: Cyclone's configured domain and how many sessions of this process use it.
+_DOMAINS: dict[int, list[Any]] = {}
 _DOMAINS_LOCK = threading.Lock()
 
 
-def _domain(domain_id: int, connect: Sequence[str]) -> None:
-    """Configure Cyclone for ``domain_id`` once per process (before its first participant)."""
+def _enter_domain(domain_id: int, connect: Sequence[str]) -> None:
+    """Configure Cyclone for ``domain_id`` before the first participant of this process joins it."""
     with _DOMAINS_LOCK:
-        if domain_id not in _DOMAINS:
-            _DOMAINS[domain_id] = Domain(domain_id, cyclone_config(connect))
+        entry = _DOMAINS.get(domain_id)
+        if entry is None:
+            entry = _DOMAINS[domain_id] = [Domain(domain_id, cyclone_config(connect)), 0]
+        entry[1] += 1
+
+
+def _leave_domain(domain_id: int) -> None:
+    """The last session of a domain gone: Cyclone's threads and sockets for it go too."""
+    with _DOMAINS_LOCK:
+        entry = _DOMAINS.get(domain_id)
+        if entry is None:
+            return
+        entry[1] -= 1
+        if entry[1] <= 0:
+            del _DOMAINS[domain_id]
+            destroy(entry[0])
 
 
 def _qos_listener(on_qos_event: QoSEventCallback | None, topic: str, offered: bool) -> dict[str, Any]:
@@ -106,10 +122,14 @@ class DdsBackend(Backend):
         """See :meth:`Backend.open` (``connect``: extra unicast peers, as ROS_STATIC_PEERS)."""
         if not 0 <= domain_id <= 232:
             raise BusError(f"ROS_DOMAIN_ID {domain_id} is out of DDS's range 0..232")
-        _domain(domain_id, connect)
-        # rmw_cyclonedds_cpp puts the enclave into the participant's USER_DATA.
-        participant = DomainParticipant(domain_id, qos=Qos(Policy.Userdata(b"enclave=/;")))
-        return cls(domain_id, participant)
+        _enter_domain(domain_id, connect)
+        try:
+            # rmw_cyclonedds_cpp puts the enclave into the participant's USER_DATA.
+            participant = DomainParticipant(domain_id, qos=Qos(Policy.Userdata(b"enclave=/;")))
+            return cls(domain_id, participant)
+        except DDSException as exc:
+            _leave_domain(domain_id)
+            raise BusError(f"cannot join DDS domain {domain_id}: {exc}") from None
 
     def topic(self, topic: str, typename: str) -> Any:
         """The DDS topic of a ROS topic and type in this participant (made once)."""
@@ -155,6 +175,7 @@ class DdsBackend(Backend):
             node.close()
         self.graph.close()
         destroy(self.participant)
+        _leave_domain(self.domain_id)
 
 
 class _Closer(Handle):
