@@ -204,7 +204,8 @@ class DdsNode(NodeHandle):
         """See :meth:`NodeHandle.declare_publisher`."""
         pub = DdsPublisher(self, topic, mtype, qos, on_qos_event)
         self._children.append(pub)
-        self.record.writers.append(pub.gid)
+        with self.backend.graph.lock:
+            self.record.writers.append(pub.gid)
         self.backend.graph.publish()
         return pub
 
@@ -216,7 +217,8 @@ class DdsNode(NodeHandle):
             sub = _AnySubscription(self, topic, qos, callback, on_qos_event)
         else:
             typed = DdsSubscription(self, topic, mtype.typename, qos, callback, on_qos_event, mtype.type_hash)
-            self.record.readers.append(typed.gid)
+            with self.backend.graph.lock:
+                self.record.readers.append(typed.gid)
             self.backend.graph.publish()
             sub = typed
         self._children.append(sub)
@@ -224,9 +226,10 @@ class DdsNode(NodeHandle):
 
     def forget(self, child: Handle, gid: bytes) -> None:
         """A child closed: take its GID out of the node's announcement."""
-        for gids in (self.record.readers, self.record.writers):
-            if gid in gids:
-                gids.remove(gid)
+        with self.backend.graph.lock:
+            for gids in (self.record.readers, self.record.writers):
+                if gid in gids:
+                    gids.remove(gid)
         if child in self._children:
             self._children.remove(child)
         if not self._closed:

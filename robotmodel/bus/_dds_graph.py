@@ -82,7 +82,7 @@ class DdsGraph:
     def __init__(self, participant: Any) -> None:
         self._participant = participant
         self.gid: bytes = participant.guid.bytes
-        self._lock = threading.RLock()
+        self.lock = threading.RLock()
         self._warner = Warner()
         self._local: list[LocalNode] = []
         self._nodes: dict[bytes, list[tuple[str, str, frozenset[bytes], frozenset[bytes]]]] = {}
@@ -106,7 +106,7 @@ class DdsGraph:
             BuiltinDataReader(participant, BuiltinTopicDcpsPublication, listener=listener),
             BuiltinDataReader(participant, BuiltinTopicDcpsSubscription, listener=listener),
         ]
-        with self._lock:
+        with self.lock:
             self._readers = readers
         self._listener = listener
         self._pump.poke()
@@ -115,13 +115,13 @@ class DdsGraph:
 
     def add_node(self, node: LocalNode) -> None:
         """Announce a new node of this session."""
-        with self._lock:
+        with self.lock:
             self._local.append(node)
         self.publish()
 
     def remove_node(self, node: LocalNode) -> None:
         """Withdraw a node of this session."""
-        with self._lock:
+        with self.lock:
             if node in self._local:
                 self._local.remove(node)
         self.publish()
@@ -129,7 +129,7 @@ class DdsGraph:
     def publish(self) -> None:
         """Send this participant's ParticipantEntitiesInfo (call after any change to a node)."""
         store = _store()
-        with self._lock:
+        with self.lock:
             if self._closed:
                 return
             t = store.types
@@ -151,7 +151,7 @@ class DdsGraph:
     # --- following the domain --------------------------------------------------------------
 
     def _drain(self) -> None:
-        with self._lock:
+        with self.lock:
             if self._closed or not self._readers:
                 return  # not built yet: the constructor pokes again when it is
             changed = False
@@ -229,20 +229,20 @@ class DdsGraph:
 
     def watch(self, callback: GraphCallback) -> None:
         """Call ``callback`` for every entity known now, then for every change."""
-        with self._lock:
+        with self.lock:
             for key, entity in self._emitted.items():
                 callback(key, entity)
             self._watchers.append(callback)
 
     def unwatch(self, callback: GraphCallback) -> None:
         """Stop calling ``callback``."""
-        with self._lock:
+        with self.lock:
             if callback in self._watchers:
                 self._watchers.remove(callback)
 
     def close(self) -> None:
         """Stop following the graph and withdraw this session's discovery writer."""
-        with self._lock:
+        with self.lock:
             self._closed = True
             self._watchers.clear()
         self._pump.close()
