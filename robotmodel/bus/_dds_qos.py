@@ -133,7 +133,8 @@ def discovery_range(env: Mapping[str, str] | None = None) -> str:
 def static_peers(env: Mapping[str, str] | None = None) -> list[str]:
     """ROS_STATIC_PEERS: hosts separated by ';' (REP 2016)."""
     env = os.environ if env is None else env
-    return [p.strip() for p in env.get("ROS_STATIC_PEERS", "").split(";") if p.strip()]
+    text = env.get("ROS_STATIC_PEERS", "")
+    return [p.strip() for p in text.split(";") if p.strip()]
 
 
 def cyclone_config(connect: Sequence[str] = (), env: Mapping[str, str] | None = None) -> str:
