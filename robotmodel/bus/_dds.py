@@ -145,9 +145,12 @@ class DdsBackend(Backend):
         with self._lock:
             if self._closed:
                 raise BusError("the DDS session is closed")
-            node = DdsNode(self, name, namespace)
+        # Made outside the session's lock: announcing it takes the graph's lock, and the
+        # graph's thread may be waiting for the session's (an untyped subscription's reader).
+        node = DdsNode(self, name, namespace)
+        with self._lock:
             self._nodes.append(node)
-            return node
+        return node
 
     def forget(self, node: DdsNode) -> None:
         """Drop a closed node from the session's list."""
