@@ -84,11 +84,18 @@ def _json_after(proc: Any, prefix: str) -> Any:
 
 def test_a_real_rclpy_talker_reaches_a_robotmodel_subscription(rclpy: Any, ctx: Context) -> None:
     rclpy("talker")
-    got = Inbox()
-    Node("rm_listener", context=ctx).create_subscription(STRING, "/chatter", lambda m: got(m.data), QoS(10))
+    got, raw = Inbox(), Inbox()
+    node = Node("rm_listener", context=ctx)
+    node.create_subscription(STRING, "/chatter", lambda m: got(m.data), QoS(10))
+    node.create_raw_subscription("/chatter", raw)
     texts = got.wait(lambda items: len(items) >= 3, "rclpy's /chatter")
     numbers = [int(t.split()[1]) for t in texts[:3]]
     assert texts[0].startswith("hello ") and numbers == list(range(numbers[0], numbers[0] + 3))
+    # Fast DDS's bytes are the CDR rosbags writes for the same message, header included.
+    (first, *_) = raw.wait(lambda items: len(items) >= 1, "raw /chatter")
+    text = typestore().deserialize_cdr(first.payload, STRING).data
+    assert first.payload == bytes(typestore().serialize_cdr(typestore().types[STRING](data=text), STRING))
+    assert first.typename == STRING and len(first.info.gid) == 16
 
 
 def test_robotmodel_joint_states_reach_a_real_rclpy_subscription(rclpy: Any, ctx: Context) -> None:
