@@ -27,7 +27,7 @@ import threading
 from collections.abc import Callable, Sequence
 from typing import Any
 
-from cyclonedds.core import DDSException, Listener, Policy, Qos
+from cyclonedds.core import DDSException, Policy, Qos
 from cyclonedds.domain import Domain, DomainParticipant
 from cyclonedds.pub import DataWriter
 from cyclonedds.sub import DataReader
@@ -52,7 +52,7 @@ from robotmodel.bus._backend import (
 )
 from robotmodel.bus._dds_graph import DdsGraph, LocalNode
 from robotmodel.bus._dds_qos import POLICY_NAMES, cyclone_config, qos_to_dds
-from robotmodel.bus._dds_raw import Pump, destroy, take_raw, write_raw
+from robotmodel.bus._dds_raw import Pump, destroy, make_listener, take_raw, write_raw
 from robotmodel.bus._dds_types import dds_topic_name, idl_type
 from robotmodel.bus._qos import QoS, incompatible_policy
 from robotmodel.bus._warn import Warner
@@ -263,7 +263,7 @@ class DdsPublisher(PublisherHandle):
         self._node = node
         self.topic = topic
         self.typename = mtype.typename
-        self._listener = Listener(**_qos_listener(on_qos_event, topic, offered=True))
+        self._listener = make_listener(**_qos_listener(on_qos_event, topic, offered=True))
         self._writer: Any = DataWriter(backend.participant, backend.topic(topic, mtype.typename),
                                        qos_to_dds(qos, mtype.type_hash), listener=self._listener)
         self._gid: bytes = self._writer.guid.bytes
@@ -308,8 +308,7 @@ class DdsSubscription(Handle):
         self._gids: dict[int, bytes] = {}
         self._seqs: dict[int, int] = {}
         self._pump = Pump(f"dds-sub {topic}", self._drain)
-        self._listener = Listener(on_data_available=self._pump.poke,
-                                  **_qos_listener(on_qos_event, topic, offered=False))
+        self._listener = self._pump.listener(**_qos_listener(on_qos_event, topic, offered=False))
         self._reader: Any = DataReader(backend.participant, backend.topic(topic, typename),
                                        qos_to_dds(qos, type_hash), listener=self._listener)
         self.gid: bytes = self._reader.guid.bytes

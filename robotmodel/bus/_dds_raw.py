@@ -30,7 +30,7 @@ from cyclonedds.internal import DDS
 
 from robotmodel.errors import BusError
 
-__all__ = ["ANY_STATE", "Pump", "destroy", "pad", "take_raw", "unpad", "write_raw"]
+__all__ = ["ANY_STATE", "Pump", "destroy", "make_listener", "pad", "take_raw", "unpad", "write_raw"]
 
 #: Every sample, view and instance state (DDS_ANY_STATE).
 ANY_STATE = 0x7F
@@ -86,9 +86,15 @@ def take_raw(reader: Any) -> list[tuple[bytes, Any]]:
 def destroy(entity: Any) -> None:
     """Delete a cyclonedds entity now (its children with it), not when Python collects it."""
     ref = getattr(entity, "_ref", None)
-    if ref is not None and Entity._entities.get(ref) is entity:
+    known: Any = Entity._entities.get(ref) if ref is not None else None
+    if known is not None and known is entity:
         del Entity._entities[ref]
-        entity._delete(ref)
+        known._delete(ref)
+
+
+def make_listener(**callbacks: Callable[..., None]) -> Any:
+    """A Cyclone listener with these ``on_...`` callbacks (they run on Cyclone's threads)."""
+    return Listener(**callbacks)  # type: ignore[no-untyped-call]
 
 
 class Pump:
@@ -108,9 +114,9 @@ class Pump:
             self._poked = True
             self._cond.notify()
 
-    def listener(self) -> Listener:
-        """A Cyclone listener that pokes this pump when data arrives."""
-        return Listener(on_data_available=self.poke)
+    def listener(self, **callbacks: Callable[..., None]) -> Any:
+        """A Cyclone listener that pokes this pump when data arrives (plus ``callbacks``)."""
+        return make_listener(on_data_available=self.poke, **callbacks)
 
     def _run(self) -> None:
         while True:

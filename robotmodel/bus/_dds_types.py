@@ -50,6 +50,10 @@ _BASE: dict[str, Any] = {
     "float32": t.float32,
     "float64": t.float64,
 }
+# cyclonedds' type annotations (indexed like generics at runtime, typed as plain classes).
+_bounded_str: Any = t.bounded_str
+_array: Any = t.array
+_sequence: Any = t.sequence
 _cache: dict[str, type[IdlStruct]] = {}
 _lock = threading.RLock()
 
@@ -77,7 +81,7 @@ def _field_type(desc: tuple[Any, Any], owner: str) -> Any:
     if name == "BASE":
         base, bound = detail
         if base == "string":
-            return t.bounded_str[bound] if bound else str
+            return _bounded_str[bound] if bound else str
         if base == "wstring":
             raise BusError(f"message type '{owner}': wstring fields are not supported on DDS yet")
         return _BASE[base]
@@ -85,10 +89,10 @@ def _field_type(desc: tuple[Any, Any], owner: str) -> Any:
         return idl_type(detail)
     if name == "ARRAY":
         inner, size = detail
-        return t.array[_field_type(inner, owner), size]
+        return _array[_field_type(inner, owner), size]
     if name == "SEQUENCE":
         inner, bound = detail
-        return t.sequence[_field_type(inner, owner), bound] if bound else t.sequence[_field_type(inner, owner)]
+        return _sequence[_field_type(inner, owner), bound] if bound else _sequence[_field_type(inner, owner)]
     raise BusError(f"message type '{owner}': unknown field kind {kind!r}")
 
 
