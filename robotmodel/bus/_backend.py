@@ -3,10 +3,10 @@
 Above this module sit :mod:`._node` (Context, Node, Publisher, Subscription) and
 :mod:`._graph` (the graph cache); they speak ROS (resolved names, ROS type names, QoS,
 nodes) and never know which wire carries them. Below it sit the wires: :mod:`._inprocess`
-(one process, no sockets) and :mod:`._zenoh` (rmw_zenoh's key expressions, attachments and
-liveliness tokens) today; a ROS 1 wire (master XML-RPC, TCPROS) and a DDS wire (Cyclone
-DDS, ``rt/`` topics, ``ros_discovery_info``) next. A wire is chosen by name with
-:func:`open_backend`; :data:`BACKENDS` lists the names.
+(one process, no sockets), :mod:`._zenoh` (rmw_zenoh's key expressions, attachments and
+liveliness tokens) and :mod:`._dds` (ROS 2's DDS conventions on Cyclone DDS: ``rt/``
+topics, ``ros_discovery_info``); a ROS 1 wire (master XML-RPC, TCPROS) next. A wire is
+chosen by name with :func:`open_backend`; :data:`BACKENDS` lists the names.
 
 Contract every wire keeps (the conformance suite in ``tests/bus/conformance`` checks it):
 
