@@ -15,6 +15,8 @@ Roles:
 - ``graph NODE TOPIC``: node ``rclpy_observer`` prints ``nodes [[name, ns], ...]`` once NODE is
   listed, then ``publishers [...]`` with each publisher's node name and QoS on TOPIC.
 - ``best_effort_talker``: node ``rclpy_be`` publishes std_msgs/String best effort on /qos_probe.
+- ``latched_listener``: node ``rclpy_tl`` subscribes std_msgs/String on /qos_probe, reliable and
+  transient local, and prints ``event POLICY`` for each incompatible publisher rclpy reports.
 """
 
 from __future__ import annotations
@@ -90,6 +92,15 @@ def main(argv: list[str]) -> int:
         pub = node.create_publisher(String, "/qos_probe",
                                     QoSProfile(depth=10, reliability=ReliabilityPolicy.BEST_EFFORT))
         node.create_timer(0.05, lambda: pub.publish(String(data="be")))
+    elif role == "latched_listener":
+        from rclpy.event_handler import SubscriptionEventCallbacks
+        from std_msgs.msg import String
+
+        node = Node("rclpy_tl")
+        qos = QoSProfile(depth=1, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+        events = SubscriptionEventCallbacks(incompatible_qos=lambda e: say("event", e.last_policy_kind.name))
+        node.create_subscription(String, "/qos_probe", lambda m: say("got", json.dumps(m.data)), qos,
+                                 event_callbacks=events)
     else:
         raise SystemExit(f"unknown role {role}")
     say("ready")

@@ -181,3 +181,19 @@ def test_an_incompatible_real_rclpy_publisher_gives_rclpys_warning_here(rclpy: A
                     "No messages will be received from it. Last incompatible policy: RELIABILITY")
     assert sub.incompatible_qos is not None and sub.incompatible_qos.last_policy == "RELIABILITY"
     assert got.items == []
+
+
+def test_a_real_rclpy_subscription_reports_our_incompatible_publisher(rclpy: Any, ctx: Context) -> None:
+    # A volatile publisher here, a transient-local subscription there: DDS refuses the pair on both sides.
+    listener = rclpy("latched_listener")
+    events: list[Any] = []
+    pub = Node("rm_volatile", context=ctx).create_publisher(STRING, "/qos_probe", QoS(10),
+                                                             on_incompatible_qos=events.append)
+    assert listener.wait_line("event ", timeout=DEADLINE_S) == "event RMW_QOS_POLICY_DURABILITY"
+    end = time.monotonic() + DEADLINE_S
+    while not events and time.monotonic() < end:
+        time.sleep(0.01)
+    assert [(e.last_policy, e.topic) for e in events] == [("DURABILITY", "/qos_probe")]
+    pub.publish(typestore().types[STRING](data="never"))
+    assert not pub.matched()
+    assert not [ln for ln in listener.lines if ln.startswith("got ")]
