@@ -147,8 +147,11 @@ def test_robotmodels_graph_lists_a_real_rclpy_node_and_its_topics(rclpy: Any, ct
     graph = ctx.graph
 
     def shown(entities: list[Any]) -> bool:
-        return any(e.kind is EntityKind.NODE and e.node_name == "rclpy_talker" for e in entities) and any(
-            e.topic == "/chatter" and e.node_name == "rclpy_talker" for e in entities)
+        # rclpy announces each endpoint on ros_discovery_info after DDS discovery shows it, so
+        # wait until both of its endpoints are attributed to its node.
+        mine = {e.topic for e in entities if e.node_name == "rclpy_talker"}
+        return any(e.kind is EntityKind.NODE and e.node_name == "rclpy_talker" for e in entities) and \
+            {"/chatter", "/rclpy_in"} <= mine
 
     assert graph.wait_for(shown, DEADLINE_S), graph.entities()
     assert ("rclpy_talker", "/") in observer.get_node_names_and_namespaces()
