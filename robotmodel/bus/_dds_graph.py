@@ -6,8 +6,8 @@ DCPSSubscription: GUID, topic, type, QoS) but not ROS nodes. ROS 2 adds them wit
 transient local, keep last 1): each participant publishes its GID and, per node, the
 namespace, the name and the GIDs of the node's readers and writers, again whenever that
 changes. This module does both halves for one session: it publishes the session's nodes
-and reads everyone's (its own included, as rmw does), and joins the two into the seam's
-:class:`Entity` records. An endpoint no node claims (yet) is shown as rmw shows it, with
+and reads everyone's (its own taken from the session itself, so that they show at once),
+and joins the two into the seam's :class:`Entity` records. An endpoint no node claims (yet) is shown as rmw shows it, with
 node ``_NODE_NAME_UNKNOWN_`` in ``_NODE_NAMESPACE_UNKNOWN_`` and no ``node_key``. A
 participant that leaves (or whose lease runs out when its process dies) takes its nodes
 along; Cyclone disposes its endpoints.
@@ -147,6 +147,8 @@ class DdsGraph:
                 for n in self._local])
             payload = bytes(store.serialize_cdr(info, _INFO_TYPE))
             write_raw(self._writer, payload, DISCOVERY_TOPIC, _INFO_TYPE)
+            if self._readers:
+                self._emit()
 
     # --- following the domain --------------------------------------------------------------
 
@@ -201,7 +203,10 @@ class DdsGraph:
     def _current(self) -> dict[str, Entity]:
         entities: dict[str, Entity] = {}
         owner: dict[bytes, tuple[str, str, str]] = {}
-        for pgid, nodes in self._nodes.items():
+        # This session's own nodes as they are now, not as its last sample said.
+        known = {**self._nodes, self.gid: [(n.namespace, n.name, frozenset(n.readers), frozenset(n.writers))
+                                           for n in self._local]}
+        for pgid, nodes in known.items():
             seen: dict[tuple[str, str], int] = {}
             for ns, name, readers, writers in nodes:
                 n = seen[(ns, name)] = seen.get((ns, name), -1) + 1
