@@ -7,10 +7,10 @@ transient local, keep last 1): each participant publishes its GID and, per node,
 namespace, the name and the GIDs of the node's readers and writers, again whenever that
 changes. This module does both halves for one session: it publishes the session's nodes
 and reads everyone's (its own taken from the session itself, so that they show at once),
-and joins the two into the seam's :class:`Entity` records. An endpoint no node claims (yet) is shown as rmw shows it, with
-node ``_NODE_NAME_UNKNOWN_`` in ``_NODE_NAMESPACE_UNKNOWN_`` and no ``node_key``. A
-participant that leaves (or whose lease runs out when its process dies) takes its nodes
-along; Cyclone disposes its endpoints.
+and joins the two into the seam's :class:`Entity` records. An endpoint no node claims
+(yet) is shown as rmw shows it, with node ``_NODE_NAME_UNKNOWN_`` in
+``_NODE_NAMESPACE_UNKNOWN_`` and no ``node_key``. A participant that leaves (or whose
+lease runs out when its process dies) takes its nodes along; Cyclone disposes its endpoints.
 
 GIDs are DDS GUIDs, 16 bytes (Jazzy's ``rmw_gid_t``; Fast DDS and Cyclone alike).
 Only the DDS wire uses this module (it is below the backend seam).
