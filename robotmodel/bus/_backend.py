@@ -3,10 +3,10 @@
 Above this module sit :mod:`._node` (Context, Node, Publisher, Subscription) and
 :mod:`._graph` (the graph cache); they speak ROS (resolved names, ROS type names, QoS,
 nodes) and never know which wire carries them. Below it sit the wires: :mod:`._inprocess`
-(one process, no sockets) and :mod:`._zenoh` (rmw_zenoh's key expressions, attachments and
-liveliness tokens) today; a ROS 1 wire (master XML-RPC, TCPROS) and a DDS wire (Cyclone
-DDS, ``rt/`` topics, ``ros_discovery_info``) next. A wire is chosen by name with
-:func:`open_backend`; :data:`BACKENDS` lists the names.
+(one process, no sockets), :mod:`._zenoh` (rmw_zenoh's key expressions, attachments and
+liveliness tokens) and :mod:`._dds` (ROS 2's DDS conventions on Cyclone DDS: ``rt/``
+topics, ``ros_discovery_info``); a ROS 1 wire (master XML-RPC, TCPROS) next. A wire is
+chosen by name with :func:`open_backend`; :data:`BACKENDS` lists the names.
 
 Contract every wire keeps (the conformance suite in ``tests/bus/conformance`` checks it):
 
@@ -177,7 +177,9 @@ class Entity:
     is the fully qualified topic, ``typename`` the ROS type (``pkg/msg/Name``), ``type_hash``
     its RIHS01 text where the wire has one, ``qos`` the endpoint's QoS and ``gid`` the
     16-byte id its samples carry. ``node_key`` tells apart nodes of one name (zenoh: session
-    and node id; ROS 1: the node's URI).
+    and node id; ROS 1: the node's URI; DDS: participant GID and the node's place in it); it
+    is '' for an endpoint whose node the wire does not know (DDS: no ``ros_discovery_info``
+    names it; rmw shows it under ``_NODE_NAME_UNKNOWN_``).
     """
 
     kind: EntityKind
@@ -352,6 +354,7 @@ class Backend(ABC):
 BACKENDS: dict[str, str] = {
     "inprocess": "robotmodel.bus._inprocess:InProcessBackend",
     "zenoh": "robotmodel.bus._zenoh:ZenohBackend",
+    "dds": "robotmodel.bus._dds:DdsBackend",
 }
 
 

@@ -62,9 +62,10 @@ class Graph:
         """Every node as (name, namespace), as rclpy's ``get_node_names_and_namespaces()``.
 
         As in rmw's graph caches, a node is one ``node_key`` (zenoh: session and node id),
-        known from any of its entities; nodes sharing a name are each listed.
+        known from any of its entities; nodes sharing a name are each listed. An endpoint no
+        node claims (DDS: none in ``ros_discovery_info``) has no ``node_key`` and adds no node.
         """
-        nodes = {e.node_key: (e.node_name, e.namespace) for e in self.entities()}
+        nodes = {e.node_key: (e.node_name, e.namespace) for e in self.entities() if e.node_key}
         return sorted(nodes.values())
 
     def endpoints(self, topic: str, kind: EntityKind) -> list[Entity]:

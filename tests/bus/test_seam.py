@@ -15,7 +15,8 @@ from robotmodel.bus import BACKENDS, BusError, Context, open_backend
 ROOT = Path(robotmodel.__file__).resolve().parent
 BUS = ROOT / "bus"
 # Modules below the seam: the wires and what only they use.
-WIRE_MODULES = {"_inprocess", "_zenoh", "_zenoh_names", "_zenoh_session", "_attachment", "_config"}
+WIRE_MODULES = {"_inprocess", "_zenoh", "_zenoh_names", "_zenoh_session", "_attachment", "_config",
+                "_dds", "_dds_types", "_dds_qos", "_dds_raw", "_dds_graph"}
 # The bus's own modules above the seam (the package's __init__ re-exports zenoh's name helpers
 # for users of the wire format, and is not counted).
 ABOVE = ["_backend", "_node", "_graph", "_codec", "_names", "_qos", "_remap", "_domain", "_warn"]

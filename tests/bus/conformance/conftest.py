@@ -46,6 +46,9 @@ WIRES = [
              graph_deadline_s=1.0),
     WireSpec("zenoh", processes=True, qos_rules="none", parameters="node", volatile_gets_latched=False,
              graph_deadline_s=30.0),
+    # A killed DDS peer leaves when its participant's lease (Cyclone's default: 10 s) runs out.
+    WireSpec("dds", processes=True, qos_rules="dds", parameters="node", volatile_gets_latched=False,
+             graph_deadline_s=30.0),
 ]
 
 

@@ -1,0 +1,160 @@
+"""ROS 2 QoS as DDS QoS, and back; DDS policy ids as rmw names them; Cyclone's discovery configuration.
+
+The mapping is rmw_cyclonedds_cpp's: reliability, durability, history and depth one to one
+(reliable writers block without limit, as there), deadline, lifespan and liveliness with
+their lease where not infinite, and Jazzy's ``typehash=RIHS01_...;`` in USER_DATA.
+
+Discovery follows REP 2016 as rmw_cyclonedds_cpp turns it into Cyclone's configuration:
+``ROS_AUTOMATIC_DISCOVERY_RANGE`` LOCALHOST (robotmodel's default, also what the deprecated
+``ROS_LOCALHOST_ONLY=1`` means) keeps Cyclone on the loopback interface without multicast
+and finds the others by unicast to the well-known ports of participant indices on
+localhost; SUBNET uses Cyclone's defaults (multicast on the machine's interface); OFF
+finds no one; ``ROS_STATIC_PEERS`` (``;``-separated hosts) are added as unicast peers.
+
+Only the DDS wire uses this module (it is below the backend seam).
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from collections.abc import Mapping, Sequence
+from typing import Any
+from xml.sax.saxutils import quoteattr
+
+from cyclonedds.core import Policy, Qos
+
+from robotmodel.bus._qos import DURATION_INFINITE_NS, Durability, History, Liveliness, QoS, Reliability
+from robotmodel.errors import BusError
+
+__all__ = [
+    "POLICY_NAMES",
+    "cyclone_config",
+    "discovery_range",
+    "qos_from_dds",
+    "qos_to_dds",
+    "type_hash_of",
+]
+
+#: DDS QoS policy ids (DDS 1.4, Table 2.4's ids as Cyclone numbers them) -> rmw's policy names.
+POLICY_NAMES: dict[int, str] = {
+    2: "DURABILITY",
+    4: "DEADLINE",
+    8: "LIVELINESS",
+    11: "RELIABILITY",
+    13: "HISTORY",
+    21: "LIFESPAN",
+}
+# Cyclone's infinite duration (DDS_INFINITY).
+_INFINITY = 2**63 - 1
+# rmw_cyclonedds_cpp's MaxAutoParticipantIndex for a localhost or static-peer domain.
+_MAX_PARTICIPANT_INDEX = 32
+_RANGES = ("OFF", "LOCALHOST", "SUBNET", "SYSTEM_DEFAULT")
+
+
+def qos_to_dds(qos: QoS, type_hash: str = "") -> Qos:
+    """The DDS QoS of a ROS endpoint (as rmw_cyclonedds_cpp sets it)."""
+    q = qos.resolved()
+    policies: list[Any] = [
+        Policy.Reliability.Reliable(max_blocking_time=_INFINITY) if q.reliability == Reliability.RELIABLE
+        else Policy.Reliability.BestEffort,
+        Policy.Durability.TransientLocal if q.durability == Durability.TRANSIENT_LOCAL
+        else Policy.Durability.Volatile,
+        Policy.History.KeepAll if q.history == History.KEEP_ALL else Policy.History.KeepLast(q.depth),
+    ]
+    if q.durability == Durability.TRANSIENT_LOCAL:
+        # Cyclone keeps for late joiners what DURABILITY_SERVICE's history says (default: the
+        # last 1), so it is set to the endpoint's history, which is what ROS means.
+        policies.append(Policy.DurabilityService(0, policies[2], -1, -1, -1))
+    if q.deadline_ns != DURATION_INFINITE_NS:
+        policies.append(Policy.Deadline(q.deadline_ns))
+    if q.lifespan_ns != DURATION_INFINITE_NS:
+        policies.append(Policy.Lifespan(q.lifespan_ns))
+    lease = q.liveliness_lease_ns if q.liveliness_lease_ns != DURATION_INFINITE_NS else _INFINITY
+    if q.liveliness == Liveliness.MANUAL_BY_TOPIC:
+        policies.append(Policy.Liveliness.ManualByTopic(lease))
+    elif lease != _INFINITY:
+        policies.append(Policy.Liveliness.Automatic(lease))
+    if type_hash:
+        policies.append(Policy.Userdata(f"typehash={type_hash};".encode()))
+    return Qos(*policies)
+
+
+def _ns(value: int) -> int:
+    return DURATION_INFINITE_NS if value >= _INFINITY else int(value)
+
+
+def qos_from_dds(qos: Qos) -> QoS:
+    """The ROS QoS of a discovered endpoint (what rmw reports for it)."""
+    rel = qos[Policy.Reliability]
+    dur = qos[Policy.Durability]
+    hist = qos[Policy.History]
+    deadline = qos[Policy.Deadline]
+    lifespan = qos[Policy.Lifespan]
+    live = qos[Policy.Liveliness]
+    keep_all = hist is not None and hist == Policy.History.KeepAll
+    depth = 0 if hist is None or keep_all else int(getattr(hist, "depth", 0))
+    return QoS(
+        depth=depth,
+        reliability=Reliability.BEST_EFFORT if rel == Policy.Reliability.BestEffort else Reliability.RELIABLE,
+        durability=Durability.TRANSIENT_LOCAL if dur == Policy.Durability.TransientLocal else Durability.VOLATILE,
+        history=History.KEEP_ALL if keep_all else History.KEEP_LAST,
+        deadline_ns=_ns(getattr(deadline, "deadline", _INFINITY)),
+        lifespan_ns=_ns(getattr(lifespan, "lifespan", _INFINITY)),
+        liveliness=Liveliness.MANUAL_BY_TOPIC if isinstance(live, Policy.Liveliness.ManualByTopic)
+        else Liveliness.AUTOMATIC,
+        liveliness_lease_ns=_ns(getattr(live, "lease_duration", _INFINITY)),
+    )
+
+
+_TYPE_HASH = re.compile(rb"typehash=([^;]*);")
+
+
+def type_hash_of(qos: Qos) -> str:
+    """The RIHS01 hash a Jazzy endpoint announces in its USER_DATA ('' when none)."""
+    user = qos[Policy.Userdata]
+    data = getattr(user, "data", b"") or b""
+    found = _TYPE_HASH.search(bytes(data))
+    return found.group(1).decode(errors="replace") if found else ""
+
+
+def discovery_range(env: Mapping[str, str] | None = None) -> str:
+    """ROS_AUTOMATIC_DISCOVERY_RANGE as robotmodel reads it (LOCALHOST unless widened); raises BusError."""
+    env = os.environ if env is None else env
+    text = env.get("ROS_AUTOMATIC_DISCOVERY_RANGE", "").strip().upper()
+    if not text:
+        return "LOCALHOST"
+    if text not in _RANGES:
+        raise BusError(f"ROS_AUTOMATIC_DISCOVERY_RANGE is '{env['ROS_AUTOMATIC_DISCOVERY_RANGE']}' "
+                       f"(expected one of {', '.join(_RANGES)})")
+    return text
+
+
+def static_peers(env: Mapping[str, str] | None = None) -> list[str]:
+    """ROS_STATIC_PEERS: hosts separated by ';' (REP 2016)."""
+    env = os.environ if env is None else env
+    text = env.get("ROS_STATIC_PEERS", "")
+    return [p.strip() for p in text.split(";") if p.strip()]
+
+
+def cyclone_config(connect: Sequence[str] = (), env: Mapping[str, str] | None = None) -> str:
+    """Cyclone's configuration XML for a domain, from the discovery range, static peers and ``connect``."""
+    env = os.environ if env is None else env
+    rng = discovery_range(env)
+    if env.get("ROS_LOCALHOST_ONLY", "") == "1" and not env.get("ROS_AUTOMATIC_DISCOVERY_RANGE"):
+        rng = "LOCALHOST"
+    peers = [*static_peers(env), *connect]
+    general = discovery = ""
+    if rng in ("LOCALHOST", "OFF"):
+        general = ('<Interfaces><NetworkInterface address="127.0.0.1" multicast="false"/></Interfaces>'
+                   "<AllowMulticast>false</AllowMulticast>")
+        if rng == "LOCALHOST":
+            peers = ["localhost", *peers]
+    if peers or rng in ("LOCALHOST", "OFF"):
+        discovery = (f"<ParticipantIndex>auto</ParticipantIndex>"
+                     f"<MaxAutoParticipantIndex>{_MAX_PARTICIPANT_INDEX}</MaxAutoParticipantIndex>")
+        if peers:
+            discovery += "<Peers>" + "".join(f"<Peer address={quoteattr(p)}/>" for p in peers) + "</Peers>"
+    return ('<CycloneDDS><Domain Id="any">'
+            f"<General>{general}</General><Discovery>{discovery}</Discovery>"
+            "</Domain></CycloneDDS>")

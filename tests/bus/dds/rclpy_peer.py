@@ -1,0 +1,115 @@
+"""The real ROS 2 side of the DDS interop tests: rclpy (Jazzy, Fast DDS) in its own interpreter.
+
+``python rclpy_peer.py ROLE [ARGS]`` prints ``ready`` once its node exists, then one line per
+event, and ends when stdin closes. It imports only rclpy and ROS message packages, so it runs
+in the interpreter ``ROBOTMODEL_RCLPY_PYTHON`` names, not in robotmodel's.
+
+Roles:
+
+- ``talker``: node ``rclpy_talker`` publishes std_msgs/String ``hello N`` on /chatter (QoS 10)
+  every 50 ms and subscribes sensor_msgs/JointState on /rclpy_in.
+- ``joint_listener``: node ``rclpy_listener`` prints ``got NAMES POSITIONS`` (JSON) per JointState
+  on /joint_states.
+- ``description_listener``: node ``rclpy_late`` subscribes /robot_description (reliable,
+  transient local, depth 1) and prints ``got TEXT`` (JSON).
+- ``graph NODE TOPIC``: node ``rclpy_observer`` prints ``nodes [[name, ns], ...]`` once NODE is
+  listed, then ``publishers [...]`` with each publisher's node name and QoS on TOPIC.
+- ``best_effort_talker``: node ``rclpy_be`` publishes std_msgs/String best effort on /qos_probe.
+- ``latched_listener``: node ``rclpy_tl`` subscribes std_msgs/String on /qos_probe, reliable and
+  transient local, and prints ``event POLICY`` for each incompatible publisher rclpy reports.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+import threading
+
+import rclpy
+from rclpy.node import Node
+from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+
+
+def say(*parts: str) -> None:
+    sys.stdout.write(" ".join(parts) + "\n")
+    sys.stdout.flush()
+
+
+def main(argv: list[str]) -> int:
+    role, *args = argv
+    rclpy.init()
+    stop = threading.Event()
+    threading.Thread(target=lambda: (sys.stdin.read(), stop.set()), daemon=True).start()
+    if role == "talker":
+        from sensor_msgs.msg import JointState
+        from std_msgs.msg import String
+
+        node = Node("rclpy_talker")
+        pub = node.create_publisher(String, "/chatter", 10)
+        node.create_subscription(JointState, "/rclpy_in", lambda m: None, 10)
+        count = [0]
+
+        def tick() -> None:
+            count[0] += 1
+            pub.publish(String(data=f"hello {count[0]}"))
+
+        node.create_timer(0.05, tick)
+    elif role == "joint_listener":
+        from sensor_msgs.msg import JointState
+
+        node = Node("rclpy_listener")
+        node.create_subscription(JointState, "/joint_states",
+                                 lambda m: say("got", json.dumps([list(m.name), list(m.position)])), 10)
+    elif role == "description_listener":
+        from std_msgs.msg import String
+
+        node = Node("rclpy_late")
+        qos = QoSProfile(depth=1, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+        node.create_subscription(String, "/robot_description", lambda m: say("got", json.dumps(m.data)), qos)
+    elif role == "graph":
+        wanted, topic = args
+        node = Node("rclpy_observer")
+        say("ready")
+        while not stop.is_set():
+            rclpy.spin_once(node, timeout_sec=0.1)
+            nodes = node.get_node_names_and_namespaces()
+            pubs = node.get_publishers_info_by_topic(topic)
+            if any(n == wanted for n, _ in nodes) and pubs:
+                say("nodes", json.dumps(sorted([n, ns] for n, ns in nodes)))
+                say("publishers", json.dumps([{
+                    "node": p.node_name, "namespace": p.node_namespace, "type": p.topic_type,
+                    "reliability": p.qos_profile.reliability.name, "durability": p.qos_profile.durability.name,
+                    "depth": p.qos_profile.depth} for p in pubs]))
+                break
+        stop.wait()
+        node.destroy_node()
+        rclpy.shutdown()
+        return 0
+    elif role == "best_effort_talker":
+        from std_msgs.msg import String
+
+        node = Node("rclpy_be")
+        pub = node.create_publisher(String, "/qos_probe",
+                                    QoSProfile(depth=10, reliability=ReliabilityPolicy.BEST_EFFORT))
+        node.create_timer(0.05, lambda: pub.publish(String(data="be")))
+    elif role == "latched_listener":
+        from rclpy.event_handler import SubscriptionEventCallbacks
+        from std_msgs.msg import String
+
+        node = Node("rclpy_tl")
+        qos = QoSProfile(depth=1, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+        events = SubscriptionEventCallbacks(incompatible_qos=lambda e: say("event", e.last_policy_kind.name))
+        node.create_subscription(String, "/qos_probe", lambda m: say("got", json.dumps(m.data)), qos,
+                                 event_callbacks=events)
+    else:
+        raise SystemExit(f"unknown role {role}")
+    say("ready")
+    while not stop.is_set():
+        rclpy.spin_once(node, timeout_sec=0.1)
+    node.destroy_node()
+    rclpy.shutdown()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
