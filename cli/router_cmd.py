@@ -30,23 +30,7 @@ def register(sub: Any) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    """Open the router session and keep it until a signal; exit 0."""
-    import zenoh
+    """Run the router until a signal."""
+    from robotmodel.bus import run_router
 
-    from robotmodel.bus._config import router_config
-    from robotmodel.errors import BusError
-    from robotmodel.signals import stop_on_signals
-
-    stop = stop_on_signals()
-    config = router_config(args.listen, args.connect)
-    try:
-        session = zenoh.open(config)
-    except zenoh.ZError as exc:
-        raise BusError(f"cannot start the router: {exc}") from exc
-    try:
-        # rmw_zenohd's start line.
-        print(f"Started Zenoh router with id {session.zid()}.", flush=True)
-        stop.wait()
-    finally:
-        session.close()  # type: ignore[no-untyped-call]
-    return 0
+    return run_router(args.listen, args.connect)

@@ -31,6 +31,11 @@ call into these packages (``run_*`` functions), which never import the command l
 
 from __future__ import annotations
 
+import sys
+from importlib.abc import MetaPathFinder
+from importlib.machinery import ModuleSpec
+from importlib.util import spec_from_file_location
+from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 __version__ = "0.1.0"
@@ -47,3 +52,37 @@ def __getattr__(name: str) -> Any:
 
         return getattr(model, name)
     raise AttributeError(f"module 'robotmodel' has no attribute '{name}'")
+
+
+class _CheckoutFinder(MetaPathFinder):
+    """Finds ``robotmodel.cli``, ``.robots`` and ``.examples`` beside this folder in a source checkout.
+
+    pyproject.toml maps ``cli/``, ``urdf/`` and ``examples/`` into the package when it is
+    installed. Python started in a checkout's root imports this folder instead of the installed
+    copy (the current directory comes first on ``sys.path``), where those three are not inside
+    it; this finder maps them the same way, so ``import robotmodel.robots`` works there too.
+    It comes after Python's own finders, so an installed or editable copy always wins.
+    """
+
+    def __init__(self, mapped: dict[str, Path]) -> None:
+        self.mapped = mapped
+
+    def find_spec(self, fullname: str, path: Any = None, target: Any = None) -> ModuleSpec | None:
+        """The spec of a mapped subpackage; None for any other name."""
+        folder = self.mapped.get(fullname)
+        if folder is None:
+            return None
+        return spec_from_file_location(fullname, folder / "__init__.py", submodule_search_locations=[str(folder)])
+
+
+def _map_checkout() -> None:
+    root = Path(__file__).resolve().parent.parent
+    if not ((root / "pyproject.toml").is_file() and (root / "urdf" / "__init__.py").is_file()):
+        return  # installed: the subpackages are inside this folder
+    layout = (("cli", "cli"), ("robots", "urdf"), ("examples", "examples"))
+    mapped = {f"robotmodel.{name}": root / folder for name, folder in layout
+              if (root / folder / "__init__.py").is_file()}
+    sys.meta_path.append(_CheckoutFinder(mapped))
+
+
+_map_checkout()

@@ -42,6 +42,12 @@ def test_quick_start_from_a_fresh_clone_root(tmp_path: Path) -> None:
     where = subprocess.run([str(venv / "bin" / "python"), "-c", "import robotmodel.cli.main as m; print(m.__file__)"],
                            cwd=tmp_path, env=env, capture_output=True, text=True, timeout=60, check=True).stdout
     assert where.startswith(str(venv)) and "site-packages" in where, where
+    # From the clone's root Python imports the source folder, not the install: the bundled
+    # robots and the command line are found there all the same, as the docs' examples need.
+    here = subprocess.run([str(venv / "bin" / "python"), "-c",
+                           "import robotmodel.robots, robotmodel.cli.main; print(robotmodel.robots.path('diffbot.urdf.xacro'))"],
+                          cwd=clone, env=env, capture_output=True, text=True, timeout=60, check=False)
+    assert here.returncode == 0 and here.stdout.strip().endswith("diffbot.urdf.xacro"), here.stdout + here.stderr
 
     port = re.search(r"private bus \(port (\d+),", done.stdout)
     assert port, out

@@ -64,6 +64,7 @@ from robotmodel.bus._qos import (
     incompatible_policy,
 )
 from robotmodel.bus._remap import RemapKind, RemapRule, parse_rules, remap_topic
+from robotmodel.bus._router import run_router
 from robotmodel.bus._zenoh_names import Token, gid_of, mangle, qos_from_keyexpr, qos_to_keyexpr, topic_keyexpr
 from robotmodel.errors import BusError
 
@@ -118,6 +119,7 @@ __all__ = [
     "remap_topic",
     "resolve_topic",
     "ros_type_name",
+    "run_router",
     "topic_keyexpr",
     "typestore",
 ]
