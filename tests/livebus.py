@@ -2,13 +2,15 @@
 
 from __future__ import annotations
 
-import itertools
+import fcntl
 import os
+import random
 import re
 import signal
 import socket
 import subprocess
 import sys
+import tempfile
 import threading
 import time
 from collections.abc import Callable, Iterator
@@ -19,8 +21,37 @@ import pytest
 
 HERE = Path(__file__).resolve().parent
 CHILDREN = HERE / "tf_ros" / "tf_children.py"
-# Domain ids for this run: distinct per test, clear of 0 (the default a developer may be using).
-_DOMAINS = itertools.count(100 + os.getpid() % 60)
+# Where domain leases are taken: one lock file per ROS domain id, shared by every test process
+# on the machine (pytest-xdist workers, a second run), so no two live tests share a domain.
+_LEASES = Path(tempfile.gettempdir()) / "robotmodel-test-domains"
+
+
+class DomainLease:
+    """A ROS domain id (1..200: clear of 0, the default a developer may be using) no other live test holds.
+
+    The lease is an exclusive lock on the domain's file, kept until :meth:`release` or until
+    this process ends (the kernel drops it then, so a killed run leaks nothing). DDS keeps
+    domains apart by id alone, so two tests on one domain would see each other's nodes.
+    """
+
+    def __init__(self) -> None:
+        _LEASES.mkdir(exist_ok=True)
+        for domain in random.sample(range(1, 201), 200):
+            fd = os.open(_LEASES / f"{domain}.lock", os.O_RDWR | os.O_CREAT, 0o666)
+            try:
+                fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            except BlockingIOError:
+                os.close(fd)
+                continue
+            self.domain_id, self._fd = domain, fd
+            return
+        raise RuntimeError("every test ROS domain id (1..200) is leased")
+
+    def release(self) -> None:
+        """Give the domain back (harmless twice)."""
+        if self._fd >= 0:
+            os.close(self._fd)
+            self._fd = -1
 
 
 def free_port() -> int:
@@ -120,7 +151,8 @@ class Bus:
         self.cwd = cwd
         self.env = dict(os.environ)
         self.env["ROBOTMODEL_ZENOH_PORT"] = str(free_port())
-        self.env["ROS_DOMAIN_ID"] = str(next(_DOMAINS))
+        self.lease = DomainLease()
+        self.env["ROS_DOMAIN_ID"] = str(self.lease.domain_id)
         self.env["PYTHONUNBUFFERED"] = "1"
         self.env.pop("ZENOH_SESSION_CONFIG_URI", None)
         self.procs: list[Proc] = []
@@ -140,9 +172,10 @@ class Bus:
         return self.start(sys.executable, str(CHILDREN), *args)
 
     def reap(self) -> None:
-        """Kill whatever is still running."""
+        """Kill whatever is still running, then give the domain back."""
         for proc in self.procs:
             proc.kill()
+        self.lease.release()
 
 
 B = TypeVar("B", bound=Bus)

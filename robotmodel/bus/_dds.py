@@ -307,10 +307,13 @@ class DdsSubscription(Handle):
         self._callback = callback
         self._gids: dict[int, bytes] = {}
         self._seqs: dict[int, int] = {}
+        # Cyclone may call the listener (and so the pump) before DataReader() returns: the
+        # drain must find no reader then, not a missing attribute; the poke below catches up.
+        self._reader: Any = None
         self._pump = Pump(f"dds-sub {topic}", self._drain)
         self._listener = self._pump.listener(**_qos_listener(on_qos_event, topic, offered=False))
-        self._reader: Any = DataReader(backend.participant, backend.topic(topic, typename),
-                                       qos_to_dds(qos, type_hash), listener=self._listener)
+        self._reader = DataReader(backend.participant, backend.topic(topic, typename),
+                                  qos_to_dds(qos, type_hash), listener=self._listener)
         self.gid: bytes = self._reader.guid.bytes
         self._warner = Warner()
         self._pump.poke()

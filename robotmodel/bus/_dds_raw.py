@@ -20,6 +20,7 @@ Only the DDS wire uses this module (it is below the backend seam).
 from __future__ import annotations
 
 import ctypes
+import logging
 import threading
 from collections.abc import Callable
 from typing import Any
@@ -29,6 +30,8 @@ from cyclonedds.core import DDSException, Entity, Listener
 from cyclonedds.internal import DDS
 
 from robotmodel.errors import BusError
+
+log = logging.getLogger("robotmodel.bus")
 
 __all__ = ["ANY_STATE", "Pump", "destroy", "make_listener", "pad", "take_raw", "unpad", "write_raw"]
 
@@ -125,7 +128,10 @@ class Pump:
                 if not self._open:
                     return
                 self._poked = False
-            self._drain()
+            try:
+                self._drain()
+            except Exception:  # a pump that died would leave its readers silent for good
+                log.exception("%s: taking samples failed", self._thread.name)
 
     def close(self) -> None:
         """Stop the thread (waits for a drain in progress unless called from it)."""

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import contextlib
 import os
-import random
 import signal
 import socket
 import subprocess
@@ -15,6 +14,7 @@ from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pytest
+from livebus import DomainLease
 
 PEER = Path(__file__).with_name("peer.py")
 
@@ -130,11 +130,12 @@ class Procs:
 
 
 @pytest.fixture
-def bus_env(monkeypatch: pytest.MonkeyPatch) -> dict[str, str]:
+def bus_env(monkeypatch: pytest.MonkeyPatch) -> Iterator[dict[str, str]]:
     """An environment with a private rendezvous port and ROS domain, also set for this process."""
+    lease = DomainLease()
     env = dict(os.environ)
     env["ROBOTMODEL_ZENOH_PORT"] = str(free_port())
-    env["ROS_DOMAIN_ID"] = str(random.randint(1, 200))
+    env["ROS_DOMAIN_ID"] = str(lease.domain_id)
     env.pop("ZENOH_SESSION_CONFIG_URI", None)
     env.pop("ZENOH_CONFIG_OVERRIDE", None)
     env["PYTHONUNBUFFERED"] = "1"
@@ -142,7 +143,10 @@ def bus_env(monkeypatch: pytest.MonkeyPatch) -> dict[str, str]:
         monkeypatch.setenv(key, env[key])
     monkeypatch.delenv("ZENOH_SESSION_CONFIG_URI", raising=False)
     monkeypatch.delenv("ZENOH_CONFIG_OVERRIDE", raising=False)
-    return env
+    try:
+        yield env
+    finally:
+        lease.release()
 
 
 @pytest.fixture

@@ -270,7 +270,11 @@ def test_remaps_rename_topics_and_nodes(wire: Any) -> None:
     pub.publish(String(data="hi"))
     assert datas(got.wait(lambda items: len(items) >= 1, what="remapped sample")) == ["hi"]
     graph = observer.context.graph
-    assert graph.wait_for(lambda es: any(e.node_name == "renamed" for e in es), wire.spec.graph_deadline_s)
+    # The publisher's own entry, not only the node's: on DDS a node (ros_discovery_info) and its
+    # endpoints (DDS discovery) arrive separately.
+    assert graph.wait_for(lambda es: any(e.node_name == "renamed" and e.kind is EntityKind.PUBLISHER
+                                         and e.topic == "/remapped/chatter" for e in es),
+                          wire.spec.graph_deadline_s)
     assert ("renamed", "/moved") in observer.get_node_names_and_namespaces()
     assert ("talker", "/r1") not in observer.get_node_names_and_namespaces()
     (endpoint,) = graph.endpoints("/remapped/chatter", EntityKind.PUBLISHER)

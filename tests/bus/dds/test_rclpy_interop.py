@@ -196,7 +196,8 @@ def test_a_real_rclpy_subscription_reports_our_incompatible_publisher(rclpy: Any
     end = time.monotonic() + DEADLINE_S
     while not events and time.monotonic() < end:
         time.sleep(0.01)
-    assert [(e.last_policy, e.topic) for e in events] == [("DURABILITY", "/qos_probe")]
+    # One event per incompatible match DDS sees: a rediscovered peer (likely under load) adds one.
+    assert events and {(e.last_policy, e.topic) for e in events} == {("DURABILITY", "/qos_probe")}
     pub.publish(typestore().types[STRING](data="never"))
     assert not pub.matched()
     assert not [ln for ln in listener.lines if ln.startswith("got ")]
