@@ -3,7 +3,8 @@
 Processes using it talk to each other and to ROS 2 nodes running rmw_zenoh (Jazzy and
 later): the same key expressions, CDR payloads, attachments and liveliness tokens. Nodes
 speak ROS through one backend seam (:mod:`robotmodel.bus._backend`, its contract in the
-docstring), behind which each wire lives: ``"zenoh"`` and ``"inprocess"`` today.
+docstring), behind which each wire lives: ``"zenoh"``, ``"ros1"`` (a ROS 1 master and
+TCPROS) and ``"inprocess"`` today; :func:`default_wire` picks one from the environment.
 
 >>> from robotmodel.bus import Node, typestore
 >>> String = typestore().types["std_msgs/msg/String"]   # any class with __msgtype__ works
@@ -63,6 +64,7 @@ from robotmodel.bus._qos import (
     Reliability,
     incompatible_policy,
 )
+from robotmodel.bus._select import default_wire
 from robotmodel.bus._remap import RemapKind, RemapRule, parse_rules, remap_topic
 from robotmodel.bus._zenoh_names import Token, gid_of, mangle, qos_from_keyexpr, qos_to_keyexpr, topic_keyexpr
 from robotmodel.errors import BusError
@@ -107,6 +109,7 @@ __all__ = [
     "codec_for",
     "dds_type_name",
     "default_domain_id",
+    "default_wire",
     "gid_of",
     "incompatible_policy",
     "mangle",

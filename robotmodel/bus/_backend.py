@@ -177,7 +177,7 @@ class Entity:
     is the fully qualified topic, ``typename`` the ROS type (``pkg/msg/Name``), ``type_hash``
     its RIHS01 text where the wire has one, ``qos`` the endpoint's QoS and ``gid`` the
     16-byte id its samples carry. ``node_key`` tells apart nodes of one name (zenoh: session
-    and node id; ROS 1: the node's URI).
+    and node id; ROS 1: the caller id, as the master keeps one node per name).
     """
 
     kind: EntityKind
@@ -351,6 +351,7 @@ class Backend(ABC):
 #: Wire name -> "module:class" of its backend (imported only when opened).
 BACKENDS: dict[str, str] = {
     "inprocess": "robotmodel.bus._inprocess:InProcessBackend",
+    "ros1": "robotmodel.bus._ros1:Ros1Backend",
     "zenoh": "robotmodel.bus._zenoh:ZenohBackend",
 }
 

@@ -1,8 +1,9 @@
 """Message classes to wire bytes and back, with the ROS type name and RIHS01 hash the wires need.
 
 A codec serves one encoding (MCAP's names: ``"cdr"``, ``"ros1"``); the node layer asks for
-the one its wire declares (:attr:`robotmodel.bus.Backend.encoding`). Only CDR codecs exist
-so far; a ROS 1 wire registers its own with :func:`register_codec`.
+the one its wire declares (:attr:`robotmodel.bus.Backend.encoding`). The ROS 1 codecs of
+the same classes live in :mod:`._ros1codec` (made on first use); others plug in with
+:func:`register_codec`.
 
 :mod:`robotmodel.msgs` classes go through its ``serialize``/``deserialize`` (rosbags, and a
 hand-written TFMessage path with the same bytes); ROS type names mean rosbags' own classes.
@@ -17,7 +18,7 @@ from collections.abc import Callable
 from functools import cache
 from typing import Any
 
-from robotmodel.bus._backend import CDR, MessageType
+from robotmodel.bus._backend import CDR, ROS1, MessageType
 from robotmodel.errors import BusError, MessageError
 
 __all__ = [
@@ -225,11 +226,17 @@ def codec_for(msg_type: Any, encoding: str = CDR) -> Codec:
         found = _registry.get((msg_type, encoding))
     if found is not None:
         return found
+    if encoding == ROS1:
+        from robotmodel.bus._ros1codec import ros1_codec
+
+        codec: Codec = ros1_codec(msg_type)
+        register_codec(msg_type, codec)
+        return codec
     if encoding != CDR:
         name = msg_type if isinstance(msg_type, str) else getattr(msg_type, "__msgtype__", repr(msg_type))
-        raise BusError(f"no {encoding} codec for {name} (only CDR codecs are built in)")
+        raise BusError(f"no {encoding} codec for {name} (CDR and ROS 1 codecs are built in)")
     if isinstance(msg_type, str):
-        codec: Codec = RosbagsCodec(msg_type)
+        codec = RosbagsCodec(msg_type)
     else:
         typename = getattr(msg_type, "__msgtype__", None)
         if not isinstance(typename, str):
