@@ -1,0 +1,121 @@
+"""robotmodel's commands on the ROS 1 wire against Debian's real ROS 1, both directions.
+
+Each test has a private roscore (the ``ros1`` fixture) and runs robotmodel's commands as a
+user with a sourced ROS 1 does: ``ROS_VERSION=1`` and ``ROS_MASTER_URI`` set, no flag. On the
+other side are the real C++ static_transform_publisher, a rospy tf2_ros listener
+(tests/ros1/tf2_listener.py), rospy publishers and the real rostopic/rosnode.
+"""
+
+from __future__ import annotations
+
+import math
+import signal
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+from ros1helpers import SYSTEM_PYTHON, GroupProc, Ros1World, wait_until
+
+from robotmodel.kinematics import KinematicModel, KinematicState
+from robotmodel.model import load
+
+HERE = Path(__file__).resolve().parent
+LISTENER = HERE / "tf2_listener.py"
+ARM = HERE.parent.parent / "urdf" / "arm.urdf.xacro"
+STATIC_TRANSFORM_PUBLISHER = "/usr/lib/tf2_ros/static_transform_publisher"
+
+
+def robotmodel(ros1: Ros1World, *args: str) -> GroupProc:
+    """A robotmodel command as a sourced ROS 1 shell runs it (ROS_VERSION=1, ROS_MASTER_URI: no flag)."""
+    ros1.env["ROS_VERSION"] = "1"
+    return ros1.start(sys.executable, "-m", "robotmodel.cli.main", *args)
+
+
+def listener(ros1: Ros1World, *args: str) -> GroupProc:
+    proc = ros1.start(SYSTEM_PYTHON, str(LISTENER), *args)
+    proc.wait_line(r"^ready$", 60)
+    return proc
+
+
+def publishes(ros1: Ros1World, node: str, topic: str) -> bool:
+    return f"pub {topic}" in ros1.registrations_of(node)
+
+
+def pose_matrix(x: float, y: float, z: float, qx: float, qy: float, qz: float, qw: float) -> np.ndarray:
+    """The 4x4 matrix of a pose (unit quaternion x, y, z, w), written out from the quaternion's definition."""
+    m = np.eye(4)
+    m[:3, :3] = [[1 - 2 * (qy * qy + qz * qz), 2 * (qx * qy - qz * qw), 2 * (qx * qz + qy * qw)],
+                 [2 * (qx * qy + qz * qw), 1 - 2 * (qx * qx + qz * qz), 2 * (qy * qz - qx * qw)],
+                 [2 * (qx * qz - qy * qw), 2 * (qy * qz + qx * qw), 1 - 2 * (qx * qx + qy * qy)]]
+    m[:3, 3] = [x, y, z]
+    return m
+
+
+def test_real_static_transform_publisher_to_robotmodel_tf2_echo(ros1: Ros1World) -> None:
+    stp = ros1.start(STATIC_TRANSFORM_PUBLISHER, "1", "2", "3", "0", "0", "0", "map", "odom")
+    wait_until(lambda: any(topic == "/tf_static" for topic, _ in ros1.master.get_system_state()[0]), 30,
+               "the real static_transform_publisher's /tf_static")
+    echo = robotmodel(ros1, "tf2_echo", "map", "odom")
+    echo.wait_line(r"- Translation: \[1\.000, 2\.000, 3\.000\]", 60)
+    echo.wait_line(r"- Rotation: in Quaternion \[0\.000, 0\.000, 0\.000, 1\.000\]", 10)
+    assert stp.popen.poll() is None
+
+
+def test_robotmodel_static_transform_publisher_to_a_later_rospy_tf2_listener(ros1: Ros1World) -> None:
+    stp = robotmodel(ros1, "static_transform_publisher", "--x", "1", "--y", "2", "--z", "3", "--yaw", "0.5",
+                     "--frame-id", "map", "--child-frame-id", "odom")
+    wait_until(lambda: any(topic == "/tf_static" for topic, _ in ros1.master.get_system_state()[0]), 60,
+               "robotmodel's /tf_static registration")
+    # Started after the one message was sent: only a latched /tf_static reaches it.
+    got = listener(ros1, "map", "odom").wait_line(r"^pose map odom (.*)$", 60)
+    pose = [float(v) for v in got.group(1).split()]
+    assert pose == pytest.approx([1.0, 2.0, 3.0, 0.0, 0.0, math.sin(0.25), math.cos(0.25)], abs=1e-12)
+    assert stp.popen.poll() is None
+
+
+def test_robotmodel_state_publishers_to_rospy_tf2_and_the_real_tools(ros1: Ros1World) -> None:
+    rsp = robotmodel(ros1, "robot_state_publisher", str(ARM))
+    # Off zero, so that every joint's rotation and the prismatic fingers count.
+    jsp = robotmodel(ros1, "joint_state_publisher", str(ARM), "--zeros", "arm_base_joint=0.3",
+                     "arm_shoulder_joint=-0.7", "arm_elbow_joint=1.1", "arm_wrist_pitch_joint=0.4",
+                     "arm_wrist_roll_joint=-0.9", "arm_wrist_yaw_joint=0.2", "gripper_left_finger_joint=0.01")
+    wait_until(lambda: publishes(ros1, "/robot_state_publisher", "/tf")
+               and publishes(ros1, "/joint_state_publisher", "/joint_states"), 60, "both publishers registered")
+    links = ["gripper_right_finger_link", "arm_wrist_yaw_link", "arm_fore_link"]
+    pairs = [arg for link in links for arg in ("world", link)]
+    tf = listener(ros1, "--joint-states", *pairs)
+    joints = tf.wait_line(r"^joints (.*)$", 60).group(1)
+    values = {name: float(value) for name, _, value in (item.partition("=") for item in joints.split())}
+    assert values["arm_elbow_joint"] == 1.1 and values["gripper_left_finger_joint"] == 0.01, values
+    state = KinematicState(KinematicModel(load(ARM)))
+    state.update(values)
+    for link in links:
+        got = tf.wait_line(rf"^pose world {link} (.*)$", 60)
+        pose = pose_matrix(*(float(v) for v in got.group(1).split()))
+        np.testing.assert_allclose(pose, state.link_matrix(link), atol=1e-9, rtol=0, err_msg=link)
+
+    nodes = ros1.tool("rosnode", "list").split()
+    assert {"/robot_state_publisher", "/joint_state_publisher"} <= set(nodes), nodes
+    topics = ros1.tool("rostopic", "list").split()
+    assert {"/tf", "/tf_static", "/joint_states", "/robot_description"} <= set(topics), topics
+    info = ros1.tool("rostopic", "info", "/joint_states")
+    assert "Type: sensor_msgs/JointState" in info and " * /robot_state_publisher" in info, info
+
+    for proc in (rsp, jsp):
+        proc.kill(signal.SIGINT)
+        assert proc.popen.returncode == 0, proc.lines[-10:]
+    # Nothing of theirs is left at the master.
+    assert ros1.registrations_of("/robot_state_publisher") == []
+    assert ros1.registrations_of("/joint_state_publisher") == []
+    nodes = ros1.tool("rosnode", "list").split()
+    assert "/robot_state_publisher" not in nodes and "/joint_state_publisher" not in nodes, nodes
+
+
+def test_robotmodel_topic_list_shows_a_rospy_talkers_topic_and_type(ros1: Ros1World) -> None:
+    talker = ros1.rospy("pub", "/chatter", "std_msgs/String", "--name", "talker")
+    talker.wait_line(r"^published", 60)
+    listed = robotmodel(ros1, "topic", "list", "-t")
+    listed.wait_line(r"^/chatter \[std_msgs/msg/String\]$", 60)
+    echo = robotmodel(ros1, "topic", "echo", "/chatter")
+    echo.wait_line(r"^data: hello \d+$", 60)
