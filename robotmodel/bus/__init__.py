@@ -64,8 +64,8 @@ from robotmodel.bus._qos import (
     Reliability,
     incompatible_policy,
 )
-from robotmodel.bus._select import default_wire
 from robotmodel.bus._remap import RemapKind, RemapRule, parse_rules, remap_topic
+from robotmodel.bus._select import default_wire
 from robotmodel.bus._zenoh_names import Token, gid_of, mangle, qos_from_keyexpr, qos_to_keyexpr, topic_keyexpr
 from robotmodel.errors import BusError
 

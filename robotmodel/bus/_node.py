@@ -29,8 +29,8 @@ from robotmodel.bus._domain import default_domain_id
 from robotmodel.bus._graph import Graph
 from robotmodel.bus._names import resolve_topic, validate_namespace, validate_node_name
 from robotmodel.bus._qos import QOS_DEFAULT, QoS
-from robotmodel.bus._select import default_wire
 from robotmodel.bus._remap import RemapRule, node_name_of, node_namespace_of, parse_rules, remap_topic
+from robotmodel.bus._select import default_wire
 from robotmodel.bus._warn import Warner
 from robotmodel.errors import BusError, MessageError
 

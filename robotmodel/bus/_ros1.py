@@ -234,7 +234,7 @@ class Ros1NodeHandle(NodeHandle):
     @property
     def shutdown_requested(self) -> threading.Event:
         """Set when ``rosnode kill`` asked this node to stop."""
-        return self.ros1.shutdown_requested  # type: ignore[no-any-return]
+        return self.ros1.shutdown_requested
 
     def close(self) -> None:
         """Unregister everything at the master and stop the node's servers."""
@@ -388,7 +388,7 @@ class Ros1Backend(Backend):
         self.graph_changed()
 
     def graph_changed(self) -> None:
-        """This session changed its registrations: poll the master now rather than at the next period."""
+        """Poll the master now rather than at the next period (this session changed its registrations)."""
         self._poller.wake()
 
     def watch_graph(self, callback: GraphCallback) -> Handle:

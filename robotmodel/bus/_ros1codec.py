@@ -148,7 +148,7 @@ class Ros1TFCodec(Codec):
     encoding = ROS1
 
     def __init__(self, records: bool) -> None:
-        from robotmodel.msgs import TFRecord, TFMessage
+        from robotmodel.msgs import TFMessage, TFRecord
         from robotmodel.msgs._tfcodec import _make_message, _message_items
 
         self.typename = _TFMESSAGE

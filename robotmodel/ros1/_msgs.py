@@ -73,7 +73,10 @@ ANY = Ros1Type("*", "*", "")
 
 @functools.cache
 def message_type(typename: str) -> Ros1Type:
-    """The :class:`Ros1Type` of ``typename`` (``"*"``: :data:`ANY`); raises :class:`Ros1Error` for a type Noetic lacks."""
+    """The :class:`Ros1Type` of ``typename`` (``"*"``: :data:`ANY`).
+
+    Raises :class:`Ros1Error` for a type Noetic lacks.
+    """
     if typename == "*":
         return ANY
     name = _store_name(typename)

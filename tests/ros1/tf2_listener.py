@@ -17,7 +17,6 @@ import rospy
 import tf2_ros
 from sensor_msgs.msg import JointState
 
-
 _out = threading.Lock()
 
 
