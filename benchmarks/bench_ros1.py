@@ -56,15 +56,16 @@ def _line(proc: subprocess.Popen[str], prefix: str) -> str:
     for line in proc.stdout:
         if line.startswith(prefix):
             return line
-    raise RuntimeError(f"{proc.args} ended without printing {prefix!r}")
+    raise RuntimeError(f"{proc.args!r} ended without printing {prefix!r}")
 
 
 def _master_up(uri: str) -> bool:
     try:
-        code, _, (_, subs, _) = xmlrpc.client.ServerProxy(uri).getSystemState("/bench")
+        answer: Any = xmlrpc.client.ServerProxy(uri).getSystemState("/bench")
     except OSError:
         return False
-    return code == 1 and any(topic == "/rosout" for topic, _ in subs)
+    code, _, (_, subs, _) = answer
+    return bool(code == 1 and any(topic == "/rosout" for topic, _ in subs))
 
 
 def run_pair(impl: str, env: dict[str, str]) -> dict[str, Any]:
@@ -75,7 +76,7 @@ def run_pair(impl: str, env: dict[str, str]) -> dict[str, Any]:
         _line(sub, "ready")
         pub = _start([python, str(PEER), impl, "pub", str(PINGS), str(FLOOD)], env)
         try:
-            result = json.loads(_line(sub, "{"))
+            result: dict[str, Any] = json.loads(_line(sub, "{"))
             result.update(json.loads(_line(pub, "{")))
         finally:
             _stop(pub)

@@ -37,7 +37,7 @@ def _rospy(role: str) -> tuple[Any, Any]:
 
     if role == "pub":
         pub = rospy.Publisher(TOPIC, TFMessage, queue_size=None)
-        return (lambda m: pub.publish(m), lambda: pub.get_num_connections() > 0), make
+        return (pub.publish, lambda: pub.get_num_connections() > 0), make
     return lambda cb: rospy.Subscriber(TOPIC, TFMessage, cb, tcp_nodelay=True), None
 
 
