@@ -119,3 +119,33 @@ def test_robotmodel_topic_list_shows_a_rospy_talkers_topic_and_type(ros1: Ros1Wo
     listed.wait_line(r"^/chatter \[std_msgs/msg/String\]$", 60)
     echo = robotmodel(ros1, "topic", "echo", "/chatter")
     echo.wait_line(r"^data: hello \d+$", 60)
+
+
+def test_record_of_a_ros1_system_reads_back_with_rosbags_and_tf2_echo(ros1: Ros1World, tmp_path: Path) -> None:
+    from rosbags.rosbag2 import Reader
+
+    from robotmodel.msgs import typestore
+
+    ros1.start(STATIC_TRANSFORM_PUBLISHER, "1", "2", "3", "0", "0", "0", "map", "odom")
+    talker = ros1.rospy("pub", "/tf", "tf2_msgs/TFMessage", "--text", "hello", "--name", "tf_talker")
+    out = tmp_path / "rec.mcap"
+    rec = robotmodel(ros1, "record", "-o", str(out), "/tf", "/tf_static")
+    rec.wait_line(r"Recording to", 60)
+    seen = talker.count(r"^published")
+    wait_until(lambda: talker.count(r"^published") >= seen + 5, 60, "five /tf messages while recording")
+    rec.kill(signal.SIGINT)
+    assert rec.popen.returncode == 0, rec.lines[-10:]
+
+    with Reader(out) as reader:
+        got: dict[str, list[tuple[str, str, float]]] = {}
+        for conn, _, data in reader.messages():
+            msg = typestore().deserialize_cdr(data, conn.msgtype)
+            got.setdefault(conn.topic, []).extend(
+                (t.header.frame_id, t.child_frame_id, t.transform.translation.x) for t in msg.transforms)
+    assert got["/tf_static"] == [("map", "odom", 1.0)]
+    # rospy_peer's /tf: world -> hello<i> with x = i (the stamp 1700000000 s + i ns)
+    tf = got["/tf"]
+    assert len(tf) >= 4 and all(child == f"hello{int(x)}" and parent == "world" for parent, child, x in tf), tf
+    # (rospy_peer's /tf frames each hold one stamp 1 ns apart: tf2_echo --bag is shown the static one)
+    echo = ros1.start(sys.executable, "-m", "robotmodel.cli.main", "tf2_echo", "--bag", str(out), "map", "odom")
+    echo.wait_line(r"- Translation: \[1\.000, 2\.000, 3\.000\]", 60)
