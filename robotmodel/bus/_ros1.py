@@ -21,7 +21,9 @@ The graph is the master's: getSystemState and getTopicTypes, polled every
 are caller ids split into namespace and name; endpoints carry the topic's type in ROS 2
 form (``pkg/msg/Type``) and no QoS (the master has none). As ROS 1's master does, a killed
 node stays registered until ``rosnode cleanup`` (this wire prunes nothing). Parameters are
-the master's parameter server (:class:`Ros1Parameters`).
+the master's parameter server (:class:`Ros1Parameters`). A node told to shut down
+(``rosnode kill``) unregisters and stops the tool running it as Ctrl-C would
+(:func:`robotmodel.signals.request_stop`, what rospy's ``signal_shutdown`` is to rospy).
 """
 
 from __future__ import annotations
@@ -205,6 +207,7 @@ class Ros1NodeHandle(NodeHandle):
 
         self.backend = backend
         self.ros1 = Ros1Node(name, master_uri=backend.master_uri, namespace=namespace)
+        self.ros1.on_shutdown = self._on_shutdown
         self._params = Ros1Parameters(self.ros1)
         self._children: list[Handle] = []
         self._closed = False
@@ -230,6 +233,14 @@ class Ros1NodeHandle(NodeHandle):
     def parameters(self) -> ParameterStore:
         """The master's parameter server, seen from this node."""
         return self._params
+
+    def _on_shutdown(self, reason: str) -> None:
+        # As rospy's signal_shutdown: the tool running this node stops as on Ctrl-C.
+        from robotmodel.signals import request_stop
+
+        _log.warning("%s: %s; stopping", self.ros1.name, reason)
+        self.backend.graph_changed()
+        request_stop()
 
     @property
     def shutdown_requested(self) -> threading.Event:

@@ -141,6 +141,8 @@ class Ros1Node:
         self._close_done = threading.Event()
         self.shutdown_requested = threading.Event()
         self.shutdown_reason = ""
+        #: Called (with the reason) on a ``shutdown`` request, after the node closed.
+        self.on_shutdown: Callable[[str], None] | None = None
         self._tcpros = TcprosServer(self._publication, host=address.host, bind=address.bind, callerid=self.name,
                                     topics=self._publication_list)
         self._slave = SlaveServer(self._handlers(), host=address.host, bind=address.bind)
@@ -330,8 +332,14 @@ class Ros1Node:
             _log.warning("%s: shutdown request from [%s]: %s", self.name, caller_id, msg)
             self.shutdown_reason = f"external shutdown request from [{caller_id}]: {msg}"
             self.shutdown_requested.set()
+
+            def close_then_tell() -> None:
+                self.close()
+                if self.on_shutdown is not None:
+                    self.on_shutdown(self.shutdown_reason)
+
             # close after this call has answered: closing stops the server answering it
-            threading.Thread(target=self.close, name="ros1-shutdown", daemon=True).start()
+            threading.Thread(target=close_then_tell, name="ros1-shutdown", daemon=True).start()
             return [1, "shutdown", 0]
 
         def param_update(caller_id: str, key: str, value: Any) -> list[Any]:

@@ -149,3 +149,15 @@ def test_record_of_a_ros1_system_reads_back_with_rosbags_and_tf2_echo(ros1: Ros1
     # (rospy_peer's /tf frames each hold one stamp 1 ns apart: tf2_echo --bag is shown the static one)
     echo = ros1.start(sys.executable, "-m", "robotmodel.cli.main", "tf2_echo", "--bag", str(out), "map", "odom")
     echo.wait_line(r"- Translation: \[1\.000, 2\.000, 3\.000\]", 60)
+
+
+def test_rosnode_kill_stops_a_robotmodel_command(ros1: Ros1World) -> None:
+    stp = robotmodel(ros1, "static_transform_publisher", "--frame-id", "map", "--child-frame-id", "odom")
+    name = wait_until(lambda: next((n for n in ros1.tool("rosnode", "list").split()
+                                    if n.startswith("/static_transform_publisher")), None), 60,
+                      "robotmodel's static_transform_publisher in rosnode list")
+    out = ros1.tool("rosnode", "kill", name)
+    assert f"killing {name}" in out and "killed" in out, out
+    assert stp.popen.wait(30) == 0, stp.lines[-10:]
+    assert ros1.registrations_of(name) == []
+    assert name not in ros1.tool("rosnode", "list").split()
