@@ -3,9 +3,9 @@
 Above this module sit :mod:`._node` (Context, Node, Publisher, Subscription) and
 :mod:`._graph` (the graph cache); they speak ROS (resolved names, ROS type names, QoS,
 nodes) and never know which wire carries them. Below it sit the wires: :mod:`._inprocess`
-(one process, no sockets) and :mod:`._zenoh` (rmw_zenoh's key expressions, attachments and
-liveliness tokens) today; a ROS 1 wire (master XML-RPC, TCPROS) and a DDS wire (Cyclone
-DDS, ``rt/`` topics, ``ros_discovery_info``) next. A wire is chosen by name with
+(one process, no sockets), :mod:`._zenoh` (rmw_zenoh's key expressions, attachments and
+liveliness tokens) and :mod:`._ros1` (a ROS 1 master's XML-RPC, TCPROS, the parameter
+server); a DDS wire (Cyclone DDS, ``rt/`` topics, ``ros_discovery_info``) next. A wire is chosen by name with
 :func:`open_backend`; :data:`BACKENDS` lists the names.
 
 Contract every wire keeps (the conformance suite in ``tests/bus/conformance`` checks it):
@@ -76,7 +76,7 @@ for the entity. An :class:`Entity` names its node (name, namespace, enclave and 
 and QoS. The entities of a node whose process dies leave within the wire's liveliness
 deadline (zenoh: when the link drops; DDS: the participant's lease; in-process: when its
 session closes). ROS 1's master keeps a killed node registered until cleaned up (``rosnode
-cleanup``); the ROS 1 wire says whether it prunes nodes whose slave API stops answering.
+cleanup``); the ROS 1 wire keeps them as its master does (it prunes nothing).
 
 Parameters. :meth:`NodeHandle.parameters` is the node's parameter store
 (:class:`ParameterStore`: get/set/has/delete/names, names as the node sees them). The
