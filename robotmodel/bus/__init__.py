@@ -35,6 +35,7 @@ from __future__ import annotations
 from robotmodel.bus._attachment import ATTACHMENT_SIZE, Attachment
 from robotmodel.bus._backend import (
     BACKENDS,
+    ROS1,
     Backend,
     Entity,
     EntityKind,
@@ -48,7 +49,15 @@ from robotmodel.bus._backend import (
     SampleInfo,
     open_backend,
 )
-from robotmodel.bus._codec import Codec, RosbagsCodec, TFRecords, codec_for, register_codec, typestore
+from robotmodel.bus._codec import (
+    Codec,
+    RosbagsCodec,
+    TFRecords,
+    codec_for,
+    register_codec,
+    register_encoding,
+    typestore,
+)
 from robotmodel.bus._graph import Graph
 from robotmodel.bus._names import dds_type_name, resolve_topic, ros_type_name
 from robotmodel.bus._node import Context, Node, Publisher, RawMessage, Subscription, default_domain_id
@@ -65,9 +74,12 @@ from robotmodel.bus._qos import (
     incompatible_policy,
 )
 from robotmodel.bus._remap import RemapKind, RemapRule, parse_rules, remap_topic
+from robotmodel.bus._ros1codec import ros1_codec
 from robotmodel.bus._select import default_wire
 from robotmodel.bus._zenoh_names import Token, gid_of, mangle, qos_from_keyexpr, qos_to_keyexpr, topic_keyexpr
 from robotmodel.errors import BusError
+
+register_encoding(ROS1, ros1_codec)
 
 __all__ = [
     "ATTACHMENT_SIZE",
