@@ -25,7 +25,11 @@ import threading
 from collections.abc import Iterable
 from types import FrameType
 
-__all__ = ["stop_on_signals"]
+__all__ = ["request_stop", "stop_on_signals"]
+
+# Every event stop_on_signals gave out in this process, for request_stop.
+_events: list[threading.Event] = []
+_events_lock = threading.Lock()
 
 
 def stop_on_signals(event: threading.Event | None = None,
@@ -38,6 +42,8 @@ def stop_on_signals(event: threading.Event | None = None,
     wakeup fd (:func:`signal.set_wakeup_fd`) is taken by this call.
     """
     stop = event if event is not None else threading.Event()
+    with _events_lock:
+        _events.append(stop)
     wanted = {int(s) for s in signals}
     read_fd, write_fd = os.pipe()
     os.set_blocking(write_fd, False)
@@ -60,3 +66,15 @@ def stop_on_signals(event: threading.Event | None = None,
         signal.signal(sig, handler)
     signal.set_wakeup_fd(write_fd, warn_on_full_buffer=False)
     return stop
+
+
+def request_stop() -> None:
+    """Stop as a SIGINT/SIGTERM would: set every event :func:`stop_on_signals` gave out in this process.
+
+    What rospy's ``signal_shutdown`` is to a rospy process: a ROS 1 node told to shut down by
+    its master's world (``rosnode kill``, the slave API's ``shutdown``) ends the tool running it.
+    """
+    with _events_lock:
+        events = list(_events)
+    for event in events:
+        event.set()

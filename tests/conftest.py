@@ -18,6 +18,11 @@ settings.register_profile(
 )
 settings.load_profile("robotmodel")
 
+# A developer's shell with ROS 1 sourced (ROS_VERSION=1, ROS_MASTER_URI) would move every
+# process the tests start onto the ROS 1 wire (robotmodel.bus.default_wire); the tests name
+# the ROS 1 wire where they mean it (tests/ros1, the conformance suite's "ros1" cases).
+os.environ.pop("ROS_VERSION", None)
+
 REPO = Path(__file__).resolve().parents[1]
 # Real robot packages for the corpus tests: $ROBOTMODEL_CORPUS, else shared/corpus beside the
 # checkout. Optional: a fresh clone without it skips those tests (see the corpus fixture).

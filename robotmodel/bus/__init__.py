@@ -3,7 +3,8 @@
 Processes using it talk to each other and to ROS 2 nodes running rmw_zenoh (Jazzy and
 later): the same key expressions, CDR payloads, attachments and liveliness tokens. Nodes
 speak ROS through one backend seam (:mod:`robotmodel.bus._backend`, its contract in the
-docstring), behind which each wire lives: ``"zenoh"`` and ``"inprocess"`` today.
+docstring), behind which each wire lives: ``"zenoh"``, ``"ros1"`` (a ROS 1 master and
+TCPROS) and ``"inprocess"`` today; :func:`default_wire` picks one from the environment.
 
 >>> from robotmodel.bus import Node, typestore
 >>> String = typestore().types["std_msgs/msg/String"]   # any class with __msgtype__ works
@@ -34,6 +35,7 @@ from __future__ import annotations
 from robotmodel.bus._attachment import ATTACHMENT_SIZE, Attachment
 from robotmodel.bus._backend import (
     BACKENDS,
+    ROS1,
     Backend,
     Entity,
     EntityKind,
@@ -47,7 +49,15 @@ from robotmodel.bus._backend import (
     SampleInfo,
     open_backend,
 )
-from robotmodel.bus._codec import Codec, RosbagsCodec, TFRecords, codec_for, register_codec, typestore
+from robotmodel.bus._codec import (
+    Codec,
+    RosbagsCodec,
+    TFRecords,
+    codec_for,
+    register_codec,
+    register_encoding,
+    typestore,
+)
 from robotmodel.bus._graph import Graph
 from robotmodel.bus._names import dds_type_name, resolve_topic, ros_type_name
 from robotmodel.bus._node import Context, Node, Publisher, RawMessage, Subscription, default_domain_id
@@ -64,9 +74,13 @@ from robotmodel.bus._qos import (
     incompatible_policy,
 )
 from robotmodel.bus._remap import RemapKind, RemapRule, parse_rules, remap_topic
+from robotmodel.bus._ros1codec import ros1_codec
 from robotmodel.bus._router import run_router
+from robotmodel.bus._select import default_wire
 from robotmodel.bus._zenoh_names import Token, gid_of, mangle, qos_from_keyexpr, qos_to_keyexpr, topic_keyexpr
 from robotmodel.errors import BusError
+
+register_encoding(ROS1, ros1_codec)
 
 __all__ = [
     "ATTACHMENT_SIZE",
@@ -108,6 +122,7 @@ __all__ = [
     "codec_for",
     "dds_type_name",
     "default_domain_id",
+    "default_wire",
     "gid_of",
     "incompatible_policy",
     "mangle",

@@ -4,9 +4,10 @@ Above this module sit :mod:`._node` (Context, Node, Publisher, Subscription) and
 :mod:`._graph` (the graph cache); they speak ROS (resolved names, ROS type names, QoS,
 nodes) and never know which wire carries them. Below it sit the wires: :mod:`._inprocess`
 (one process, no sockets), :mod:`._zenoh` (rmw_zenoh's key expressions, attachments and
-liveliness tokens) and :mod:`._dds` (ROS 2's DDS conventions on Cyclone DDS: ``rt/``
-topics, ``ros_discovery_info``); a ROS 1 wire (master XML-RPC, TCPROS) next. A wire is
-chosen by name with :func:`open_backend`; :data:`BACKENDS` lists the names.
+liveliness tokens), :mod:`._dds` (ROS 2's DDS conventions on Cyclone DDS: ``rt/``
+topics, ``ros_discovery_info``) and :mod:`._ros1` (a ROS 1 master's XML-RPC, TCPROS, the
+parameter server). A wire is chosen by name with :func:`open_backend`; :data:`BACKENDS`
+lists the names, :func:`default_wire` picks one from the environment as ROS does.
 
 Contract every wire keeps (the conformance suite in ``tests/bus/conformance`` checks it):
 
@@ -76,7 +77,7 @@ for the entity. An :class:`Entity` names its node (name, namespace, enclave and 
 and QoS. The entities of a node whose process dies leave within the wire's liveliness
 deadline (zenoh: when the link drops; DDS: the participant's lease; in-process: when its
 session closes). ROS 1's master keeps a killed node registered until cleaned up (``rosnode
-cleanup``); the ROS 1 wire says whether it prunes nodes whose slave API stops answering.
+cleanup``); the ROS 1 wire keeps them as its master does (it prunes nothing).
 
 Parameters. :meth:`NodeHandle.parameters` is the node's parameter store
 (:class:`ParameterStore`: get/set/has/delete/names, names as the node sees them). The
@@ -177,9 +178,10 @@ class Entity:
     is the fully qualified topic, ``typename`` the ROS type (``pkg/msg/Name``), ``type_hash``
     its RIHS01 text where the wire has one, ``qos`` the endpoint's QoS and ``gid`` the
     16-byte id its samples carry. ``node_key`` tells apart nodes of one name (zenoh: session
-    and node id; ROS 1: the node's URI; DDS: participant GID and the node's place in it); it
-    is '' for an endpoint whose node the wire does not know (DDS: no ``ros_discovery_info``
-    names it; rmw shows it under ``_NODE_NAME_UNKNOWN_``).
+    and node id; ROS 1: the caller id, as the master keeps one node per name; DDS:
+    participant GID and the node's place in it); it is '' for an endpoint whose node the wire
+    does not know (DDS: no ``ros_discovery_info`` names it; rmw shows it under
+    ``_NODE_NAME_UNKNOWN_``).
     """
 
     kind: EntityKind
@@ -353,6 +355,7 @@ class Backend(ABC):
 #: Wire name -> "module:class" of its backend (imported only when opened).
 BACKENDS: dict[str, str] = {
     "inprocess": "robotmodel.bus._inprocess:InProcessBackend",
+    "ros1": "robotmodel.bus._ros1:Ros1Backend",
     "zenoh": "robotmodel.bus._zenoh:ZenohBackend",
     "dds": "robotmodel.bus._dds:DdsBackend",
 }

@@ -1,8 +1,9 @@
 """Message classes to wire bytes and back, with the ROS type name and RIHS01 hash the wires need.
 
 A codec serves one encoding (MCAP's names: ``"cdr"``, ``"ros1"``); the node layer asks for
-the one its wire declares (:attr:`robotmodel.bus.Backend.encoding`). Only CDR codecs exist
-so far; a ROS 1 wire registers its own with :func:`register_codec`.
+the one its wire declares (:attr:`robotmodel.bus.Backend.encoding`). The ROS 1 codecs of
+the same classes live in :mod:`._ros1codec`, registered by the package with
+:func:`register_encoding`; single codecs plug in with :func:`register_codec`.
 
 :mod:`robotmodel.msgs` classes go through its ``serialize``/``deserialize`` (rosbags, and a
 hand-written TFMessage path with the same bytes); ROS type names mean rosbags' own classes.
@@ -28,6 +29,7 @@ __all__ = [
     "TFRecords",
     "codec_for",
     "register_codec",
+    "register_encoding",
     "typestore",
 ]
 
@@ -210,6 +212,16 @@ _registry: dict[tuple[Any, str], Codec] = {}
 _lock = threading.Lock()
 
 
+# Encoding -> the factory of its codecs (encodings other than CDR; see register_encoding).
+_factories: dict[str, Callable[[Any], Codec]] = {}
+
+
+def register_encoding(encoding: str, factory: Callable[[Any], Codec]) -> None:
+    """Make codecs for ``encoding`` with ``factory(msg_type)`` (``robotmodel.bus`` registers ``"ros1"``)."""
+    with _lock:
+        _factories[encoding] = factory
+
+
 def register_codec(msg_type: Any, codec: Codec) -> None:
     """Use ``codec`` for messages of ``msg_type`` (a class or a ROS type name) in ``codec.encoding``."""
     with _lock:
@@ -226,10 +238,16 @@ def codec_for(msg_type: Any, encoding: str = CDR) -> Codec:
     if found is not None:
         return found
     if encoding != CDR:
-        name = msg_type if isinstance(msg_type, str) else getattr(msg_type, "__msgtype__", repr(msg_type))
-        raise BusError(f"no {encoding} codec for {name} (only CDR codecs are built in)")
+        factory = _factories.get(encoding)
+        if factory is None:
+            name = msg_type if isinstance(msg_type, str) else getattr(msg_type, "__msgtype__", repr(msg_type))
+            known = "', '".join([CDR, *_factories])
+            raise BusError(f"no {encoding} codec for {name} (encodings: '{known}')")
+        codec: Codec = factory(msg_type)
+        register_codec(msg_type, codec)
+        return codec
     if isinstance(msg_type, str):
-        codec: Codec = RosbagsCodec(msg_type)
+        codec = RosbagsCodec(msg_type)
     else:
         typename = getattr(msg_type, "__msgtype__", None)
         if not isinstance(typename, str):

@@ -30,6 +30,7 @@ from robotmodel.bus._graph import Graph
 from robotmodel.bus._names import resolve_topic, validate_namespace, validate_node_name
 from robotmodel.bus._qos import QOS_DEFAULT, QoS
 from robotmodel.bus._remap import RemapRule, node_name_of, node_namespace_of, parse_rules, remap_topic
+from robotmodel.bus._select import default_wire
 from robotmodel.bus._warn import Warner
 from robotmodel.errors import BusError, MessageError
 
@@ -48,14 +49,18 @@ def _qos(qos: QoSLike) -> QoS:
 class Context:
     """One session on one wire, shared by nodes (rclpy's context).
 
-    ``backend`` names the wire (``"zenoh"``, the default: processes and machines;
-    ``"inprocess"``: this process only; see :data:`robotmodel.bus.BACKENDS`) or is an open
-    :class:`Backend`, whose domain the context then takes. ``connect`` says where to meet
+    ``backend`` names the wire (``"zenoh"``: processes and machines; ``"ros1"``: a ROS 1
+    master and TCPROS; ``"inprocess"``: this process only; see :data:`robotmodel.bus.BACKENDS`)
+    or is an open :class:`Backend`, whose domain the context then takes. Without it the
+    environment chooses as ROS's setup does (:func:`robotmodel.bus.default_wire`: ``"ros1"`` in
+    a sourced ROS 1, else ``"zenoh"``). ``connect`` says where to meet
     the others (zenoh endpoints instead of the loopback rendezvous; see :mod:`robotmodel.bus`).
     """
 
     def __init__(self, *, domain_id: int | None = None, connect: Sequence[str] = (),
-                 backend: str | Backend = "zenoh") -> None:
+                 backend: str | Backend | None = None) -> None:
+        if backend is None:
+            backend = default_wire()
         if isinstance(backend, Backend):
             self.backend = backend
             self.domain_id = backend.domain_id
@@ -273,7 +278,7 @@ class Node:
     """
 
     def __init__(self, name: str, namespace: str = "/", *, context: Context | None = None,
-                 domain_id: int | None = None, connect: Sequence[str] = (), backend: str | Backend = "zenoh",
+                 domain_id: int | None = None, connect: Sequence[str] = (), backend: str | Backend | None = None,
                  enclave: str = "/", remappings: Sequence[str | RemapRule] = ()) -> None:
         self.remappings = parse_rules(remappings)
         # rcl renames and moves the node by the name it was created with, then remaps topics by the new one.

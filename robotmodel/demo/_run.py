@@ -87,8 +87,12 @@ def private_bus_env() -> dict[str, str]:
     The demo neither joins nor disturbs another system on this machine.
     """
     env = dict(os.environ)
-    for key in ("ZENOH_SESSION_CONFIG_URI", "ZENOH_ROUTER_CONFIG_URI", "ZENOH_CONFIG_OVERRIDE"):
+    # The private bus is zenoh whatever the shell sourced: a ROS 1 setup (ROS_VERSION=1 and
+    # ROS_MASTER_URI) or another RMW would otherwise move the children onto the user's system.
+    for key in ("ZENOH_SESSION_CONFIG_URI", "ZENOH_ROUTER_CONFIG_URI", "ZENOH_CONFIG_OVERRIDE", "ROS_VERSION",
+                "ROS_MASTER_URI"):
         env.pop(key, None)
+    env["RMW_IMPLEMENTATION"] = "rmw_zenoh_cpp"
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
         env["ROBOTMODEL_ZENOH_PORT"] = str(s.getsockname()[1])

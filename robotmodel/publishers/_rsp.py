@@ -78,7 +78,10 @@ class RobotStatePublisher:
         if subscribe:
             # rclcpp's SensorDataQoS: best effort, keep last 5, volatile.
             sensor = QoS(5, reliability=Reliability.BEST_EFFORT)
-            self._codec = codec_for(JointState)  # set before samples can arrive on the bus's thread
+            # Set before samples can arrive on the bus's thread. The hand decoder and the byte-level
+            # /tf encoder read and write CDR; other wires (ROS 1) go through their codecs.
+            self._cdr = node.context.encoding == "cdr"
+            self._codec = codec_for(JointState, node.context.encoding)
             self._sub = node.create_subscription(JointState, "joint_states", self._on_raw, sensor, raw=True)
 
     def _publish_setup(self) -> None:
@@ -90,6 +93,8 @@ class RobotStatePublisher:
     def _on_raw(self, raw: Any) -> None:
         # Undecoded samples: the hand decoder is ten times faster than the generic one on this hot path.
         try:
+            if not self._cdr:
+                raise CannotDecode("not CDR")
             msg = self._decoder.decode(raw.payload)
         except CannotDecode:
             try:
@@ -100,6 +105,11 @@ class RobotStatePublisher:
                 return
         with self._lock:
             if self._closed:
+                return
+            if not self._cdr:
+                out = self.logic.joint_state(msg, self.clock.now().nanoseconds)
+                if out is not None:
+                    self._tf_pub.publish(TFMessage(transforms=out))
                 return
             found = self.logic.joint_state_arrays(msg, self.clock.now().nanoseconds)
             if found is not None:

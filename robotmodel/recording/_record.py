@@ -8,6 +8,11 @@ every topic the graph shows, now or later, is recorded, hidden ones (a name part
 with ``_``) excepted, as ros2 bag does without ``--include-hidden-topics``. Messages are
 written undecoded; the log time is the receive time and the publish time the sender's
 source timestamp, as rosbag2 records them.
+
+On the ROS 1 wire the payloads are ROS 1 serialization; they are converted to CDR at the
+byte level (rosbags' ``ros1_to_cdr``, no decoding) so that the file stays a rosbag2-shaped
+MCAP every reader of recordings takes (rosbags' rosbag2 reader, ``tf2_echo --bag``, the
+viewer, rosbag2 itself). What that drops is ROS 1's ``Header.seq``.
 """
 
 from __future__ import annotations
@@ -84,7 +89,25 @@ class Recorder:
     def _on_message(self, msg: RawMessage) -> None:
         if self._stop.is_set():
             return
-        self.writer.write(msg.topic, time.time_ns(), msg.payload, msg.info.source_timestamp_ns)
+        now = time.time_ns()
+        payload = msg.payload
+        if msg.encoding != "cdr":
+            payload = self._to_cdr(msg)
+            if not payload:
+                return
+        self.writer.write(msg.topic, now, payload, msg.info.source_timestamp_ns)
+
+    def _to_cdr(self, msg: RawMessage) -> bytes:
+        from rosbags.serde import SerdeError
+
+        from robotmodel.msgs import typestore
+
+        msgtype = self._subscribed.get(msg.topic, msg.typename)
+        try:
+            return bytes(typestore().ros1_to_cdr(msg.payload, msgtype))
+        except (SerdeError, UnicodeDecodeError, IndexError, ValueError, KeyError) as exc:
+            _log.warning("not recording a message on %s that is not a ROS 1 %s: %s", msg.topic, msgtype, exc)
+            return b""
 
     def _discover(self) -> None:
         while (self._pending or self._all) and not self._stop.wait(_DISCOVERY_PERIOD_S):

@@ -13,7 +13,7 @@ from collections.abc import Mapping
 
 from robotmodel.errors import Ros1Error
 
-__all__ = ["MAX_HEADER", "MAX_MESSAGE", "decode_header", "encode_header", "read_frame", "read_header",
+__all__ = ["MAX_HEADER", "MAX_MESSAGE", "FrameReader", "decode_header", "encode_header", "read_frame", "read_header",
            "recv_exact", "write_header"]
 
 #: Largest header accepted: definitions of big message types are tens of KiB; garbage such as
@@ -83,6 +83,49 @@ def read_frame(sock: socket.socket, limit: int = MAX_MESSAGE) -> bytes:
     if size > limit:
         raise Ros1Error(f"frame of {size} bytes exceeds the limit of {limit}")
     return recv_exact(sock, size)
+
+
+class FrameReader:
+    """Length-prefixed frames from ``sock`` through one buffer: one ``recv`` serves many small frames.
+
+    Reading each frame as two exact reads costs two system calls per message, which bounds a
+    /tf subscriber's rate; a buffer takes whatever the socket holds and cuts frames from it.
+    """
+
+    _CHUNK = 1 << 16
+
+    def __init__(self, sock: socket.socket, limit: int = MAX_MESSAGE) -> None:
+        self._sock = sock
+        self._limit = limit
+        self._buf = b""
+        self._pos = 0
+
+    def _fill(self) -> None:
+        chunk = self._sock.recv(self._CHUNK)
+        if not chunk:
+            raise EOFError(f"connection closed with {len(self._buf) - self._pos} bytes of a frame read")
+        self._buf = self._buf[self._pos:] + chunk
+        self._pos = 0
+
+    def read(self) -> bytes:
+        """The next frame; :class:`Ros1Error` when its length exceeds the limit, EOFError at the end."""
+        while len(self._buf) - self._pos < 4:
+            self._fill()
+        (size,) = _LEN.unpack_from(self._buf, self._pos)
+        if size > self._limit:
+            raise Ros1Error(f"frame of {size} bytes exceeds the limit of {self._limit}")
+        start = self._pos + 4
+        have = len(self._buf) - start
+        if have < size and size > self._CHUNK:
+            # a large message: read its rest exactly rather than through the buffer
+            frame = self._buf[start:] + recv_exact(self._sock, size - have)
+            self._buf, self._pos = b"", 0
+            return frame
+        while len(self._buf) - self._pos - 4 < size:
+            self._fill()
+        start = self._pos + 4
+        self._pos = start + size
+        return self._buf[start:self._pos]
 
 
 def read_header(sock: socket.socket) -> dict[str, str]:

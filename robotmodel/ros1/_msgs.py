@@ -18,7 +18,7 @@ from rosbags.typesys.store import Typestore
 
 from robotmodel.errors import MessageError, Ros1Error
 
-__all__ = ["Ros1Type", "deserialize", "message_type", "serialize", "typestore", "wire_name"]
+__all__ = ["ANY", "Ros1Type", "deserialize", "message_type", "serialize", "typestore", "wire_name"]
 
 #: tf2_msgs/TFMessage as Noetic ships it (not in rosbags' ROS1_NOETIC store).
 _EXTRA_DEFINITIONS = {"tf2_msgs/msg/TFMessage": "geometry_msgs/TransformStamped[] transforms\n"}
@@ -67,9 +67,18 @@ class Ros1Type:
         return _store_name(self.name)
 
 
+#: Any type (rospy's AnyMsg): md5sum ``*`` matches every publisher, which names its type in its header.
+ANY = Ros1Type("*", "*", "")
+
+
 @functools.cache
 def message_type(typename: str) -> Ros1Type:
-    """The :class:`Ros1Type` of ``typename``; raises :class:`Ros1Error` for a type Noetic lacks."""
+    """The :class:`Ros1Type` of ``typename`` (``"*"``: :data:`ANY`).
+
+    Raises :class:`Ros1Error` for a type Noetic lacks.
+    """
+    if typename == "*":
+        return ANY
     name = _store_name(typename)
     try:
         definition, md5sum = typestore().generate_msgdef(name, ros_version=1)

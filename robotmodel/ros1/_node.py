@@ -87,18 +87,22 @@ class Ros1Publisher:
 class Ros1Subscriber:
     """A handle on a subscription; its callback gets each message (or its bytes when ``raw``)."""
 
-    def __init__(self, node: Ros1Node, subscription: Subscription, callback: Callable[[Any], None],
-                 raw: bool) -> None:
+    def __init__(self, node: Ros1Node, subscription: Subscription, callback: Callable[..., None],
+                 raw: bool, with_header: bool = False) -> None:
         self._node = node
         self.subscription = subscription
         self.topic = subscription.topic
         self.type: Ros1Type = subscription.type
         self.callback = callback
         self.raw = raw
+        self.with_header = with_header
 
-    def deliver(self, data: bytes) -> None:
-        """Hand ``data`` to the callback, decoded unless raw."""
-        self.callback(data if self.raw else deserialize(data, self.type.name))
+    def deliver(self, data: bytes, header: Mapping[str, str]) -> None:
+        """Hand ``data`` to the callback, decoded unless raw (with the publisher's header when asked)."""
+        if self.with_header:
+            self.callback(data, header)
+        else:
+            self.callback(data if self.raw else deserialize(data, self.type.name))
 
     @property
     def publisher_uris(self) -> list[str]:
@@ -137,6 +141,8 @@ class Ros1Node:
         self._close_done = threading.Event()
         self.shutdown_requested = threading.Event()
         self.shutdown_reason = ""
+        #: Called (with the reason) on a ``shutdown`` request, after the node closed.
+        self.on_shutdown: Callable[[str], None] | None = None
         self._tcpros = TcprosServer(self._publication, host=address.host, bind=address.bind, callerid=self.name,
                                     topics=self._publication_list)
         self._slave = SlaveServer(self._handlers(), host=address.host, bind=address.bind)
@@ -179,9 +185,13 @@ class Ros1Node:
             raise
         return handle
 
-    def subscribe(self, topic: str, typename: str, callback: Callable[[Any], None], *, raw: bool = False,
-                  tcp_nodelay: bool = False) -> Ros1Subscriber:
-        """Receive ``topic`` as ``typename``; ``callback`` gets rosbags messages, or bytes when ``raw``."""
+    def subscribe(self, topic: str, typename: str, callback: Callable[..., None], *, raw: bool = False,
+                  tcp_nodelay: bool = False, with_header: bool = False) -> Ros1Subscriber:
+        """Receive ``topic`` as ``typename``; ``callback`` gets rosbags messages, or bytes when ``raw``.
+
+        With ``with_header`` it gets ``(bytes, publisher's connection header)``. ``typename``
+        ``"*"`` takes any type (rospy's AnyMsg; raw only): the header names each publisher's.
+        """
         resolved = self.resolve(topic)
         msg_type = message_type(typename)
         with self._lock:
@@ -191,17 +201,17 @@ class Ros1Node:
                 if entry[0].type != msg_type:
                     raise Ros1Error(f"{self.name} already subscribes to {resolved} as {entry[0].type.name}, "
                                     f"not {msg_type.name}")
-                handle = Ros1Subscriber(self, entry[0], callback, raw)
+                handle = Ros1Subscriber(self, entry[0], callback, raw, with_header)
                 entry[1].append(handle)
                 return handle
             handles: list[Ros1Subscriber] = []
 
-            def fan_out(data: bytes, _header: Mapping[str, str]) -> None:
+            def fan_out(data: bytes, header: Mapping[str, str]) -> None:
                 for each in list(handles):
-                    each.deliver(data)
+                    each.deliver(data, header)
 
             subscription = Subscription(resolved, msg_type, self.name, fan_out, tcp_nodelay=tcp_nodelay)
-            handle = Ros1Subscriber(self, subscription, callback, raw)
+            handle = Ros1Subscriber(self, subscription, callback, raw, with_header)
             handles.append(handle)
             self._subscriptions[resolved] = (subscription, handles)
         try:
@@ -322,8 +332,14 @@ class Ros1Node:
             _log.warning("%s: shutdown request from [%s]: %s", self.name, caller_id, msg)
             self.shutdown_reason = f"external shutdown request from [{caller_id}]: {msg}"
             self.shutdown_requested.set()
+
+            def close_then_tell() -> None:
+                self.close()
+                if self.on_shutdown is not None:
+                    self.on_shutdown(self.shutdown_reason)
+
             # close after this call has answered: closing stops the server answering it
-            threading.Thread(target=self.close, name="ros1-shutdown", daemon=True).start()
+            threading.Thread(target=close_then_tell, name="ros1-shutdown", daemon=True).start()
             return [1, "shutdown", 0]
 
         def param_update(caller_id: str, key: str, value: Any) -> list[Any]:

@@ -24,7 +24,7 @@ from collections.abc import Callable, Mapping
 from typing import Any
 
 from robotmodel.errors import Ros1Error
-from robotmodel.ros1._header import read_frame, read_header, write_header
+from robotmodel.ros1._header import FrameReader, read_header, write_header
 from robotmodel.ros1._master import xmlrpc_call
 from robotmodel.ros1._msgs import Ros1Type
 
@@ -132,9 +132,10 @@ class _Inbound:
 
     def _receive(self, sock: socket.socket) -> None:
         header = self.header
+        frames = FrameReader(sock)
         while not self._stop.is_set():
             try:
-                data = read_frame(sock)
+                data = frames.read()
             except (OSError, EOFError) as exc:
                 if not self._stop.is_set():
                     _log.info("topic %s: connection to %s lost: %s", self.sub.topic, self.pub_uri, exc)

@@ -15,11 +15,12 @@ from robotmodel.bus import BACKENDS, BusError, Context, open_backend
 ROOT = Path(robotmodel.__file__).resolve().parent
 BUS = ROOT / "bus"
 # Modules below the seam: the wires and what only they use.
-WIRE_MODULES = {"_inprocess", "_zenoh", "_zenoh_names", "_zenoh_session", "_attachment", "_config", "_router",
+WIRE_MODULES = {"_inprocess", "_zenoh", "_zenoh_names", "_zenoh_session", "_attachment", "_config", "_router", "_ros1",
                 "_dds", "_dds_types", "_dds_qos", "_dds_raw", "_dds_graph"}
 # The bus's own modules above the seam (the package's __init__ re-exports zenoh's name helpers
 # for users of the wire format, and is not counted).
-ABOVE = ["_backend", "_node", "_graph", "_codec", "_names", "_qos", "_remap", "_domain", "_warn"]
+ABOVE = ["_backend", "_node", "_graph", "_codec", "_ros1codec", "_names", "_qos", "_remap", "_domain", "_warn",
+         "_select"]
 
 
 def _imports(path: Path) -> set[str]:
@@ -54,7 +55,7 @@ def test_every_bus_module_is_placed_above_or_below_the_seam() -> None:
 
 
 def test_wires_are_opened_by_name() -> None:
-    assert set(BACKENDS) >= {"inprocess", "zenoh"}
+    assert set(BACKENDS) >= {"inprocess", "zenoh", "ros1"}
     with pytest.raises(BusError, match="unknown bus backend 'carrier_pigeon'"):
         open_backend("carrier_pigeon", 0)
     with Context(backend="inprocess", domain_id=3) as ctx:

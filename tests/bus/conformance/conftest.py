@@ -5,7 +5,9 @@ Every case takes the ``wire`` fixture and runs once per entry of :data:`WIRES`. 
 are then real child processes, killed with -9 in the killed-peer case), which QoS rules it
 matches by (``"dds"``: rmw_dds_common's; ``"none"``: every pair matches, as rmw_zenoh and
 ROS 1), whether parameters are node-local or a shared server, and whether a volatile
-late joiner gets a latched sample (ROS 1 does).
+late joiner gets a latched sample (ROS 1 does), whether the graph knows endpoints' QoS and
+how much history a latched publisher keeps. The ROS 1 wire's cases each get a private real
+roscore (tests/ros1helpers), skipped with one line where Debian's ROS 1 is absent.
 """
 
 from __future__ import annotations
@@ -39,6 +41,12 @@ class WireSpec:
     # ROS 1's master keeps a killed node's registrations (rosnode cleanup removes them); the
     # ROS 1 wire must say here whether it prunes nodes whose slave API no longer answers.
     killed_peer_leaves: bool = True
+    # Whether the graph shows each endpoint's QoS (ROS 1's master knows none).
+    endpoint_qos: bool = True
+    # ROS 1 latches the last message only, whatever the depth.
+    latches_last_only: bool = False
+    # Topics every node of the wire has besides its own (ROS 1: /rosout).
+    implicit_topics: tuple[str, ...] = ()
 
 
 WIRES = [
@@ -49,6 +57,9 @@ WIRES = [
     # A killed DDS peer leaves when its participant's lease (Cyclone's default: 10 s) runs out.
     WireSpec("dds", processes=True, qos_rules="dds", parameters="node", volatile_gets_latched=False,
              graph_deadline_s=30.0),
+    WireSpec("ros1", processes=True, qos_rules="none", parameters="server", volatile_gets_latched=True,
+             graph_deadline_s=30.0, killed_peer_leaves=False, endpoint_qos=False, latches_last_only=True,
+             implicit_topics=("/rosout",)),
 ]
 
 
@@ -120,11 +131,28 @@ class Wire:
 
 
 @pytest.fixture(params=WIRES, ids=lambda spec: spec.name)
-def wire(request: pytest.FixtureRequest, bus_env: dict[str, str], procs: Any) -> Iterator[Wire]:
-    """A wire of :data:`WIRES` with a private domain (and, for zenoh, rendezvous port)."""
+def wire(request: pytest.FixtureRequest, bus_env: dict[str, str], procs: Any, tmp_path: Path,
+         monkeypatch: pytest.MonkeyPatch) -> Iterator[Wire]:
+    """A wire of :data:`WIRES` with a private domain (zenoh: rendezvous port; ROS 1: roscore)."""
+    world = None
+    if request.param.name == "ros1":
+        from ros1helpers import MISSING, Ros1World
+
+        if MISSING:
+            pytest.skip(MISSING)
+        world = Ros1World(tmp_path / "ros_home")
+        for key in ("ROS_MASTER_URI", "ROS_HOSTNAME", "ROS_HOME", "ROS_LOG_DIR"):
+            bus_env[key] = world.env[key]
+            monkeypatch.setenv(key, world.env[key])
+        for key in ("ROS_IP", "ROS_NAMESPACE"):
+            bus_env.pop(key, None)
+            monkeypatch.delenv(key, raising=False)
     w = Wire(request.param, bus_env, procs)
     try:
         yield w
     finally:
         w.close()
+        if world is not None:
+            procs.reap()
+            world.reap()
 
