@@ -11,8 +11,10 @@ from :mod:`robotmodel.rospy`), rclpy's (anything with ``nanoseconds``) or robotm
 
 from __future__ import annotations
 
+import contextlib
 from typing import Any
 
+from robotmodel.errors import TimeoutException
 from robotmodel.msgs import TransformStamped
 from robotmodel.tf import Buffer as _CoreBuffer
 
@@ -44,5 +46,8 @@ class Buffer(_CoreBuffer):
                               source_time: Any, fixed_frame: str, timeout: Any = None) -> TransformStamped:
         """The advanced lookup, waiting as :meth:`lookup_transform` does."""
         if timeout is not None:
-            self.can_transform_full(target_frame, target_time, source_frame, source_time, fixed_frame, timeout)
+            # Not via can_transform_full: robotmodel's calls lookup_transform_full, this method.
+            with contextlib.suppress(TimeoutException):
+                return super().lookup_transform_full(target_frame, target_time, source_frame, source_time,
+                                                     fixed_frame, timeout)
         return super().lookup_transform_full(target_frame, target_time, source_frame, source_time, fixed_frame)

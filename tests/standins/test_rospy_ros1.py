@@ -8,11 +8,15 @@ deleteParam, KeyError), ``__name:=``/``__ns:=``, on_shutdown hooks.
 
 from __future__ import annotations
 
+import os
 import re
+import signal
 import subprocess
 import sys
+import time
 from pathlib import Path
 
+import pytest
 from ros1helpers import SYSTEM_PYTHON, Ros1World
 
 HERE = Path(__file__).resolve().parent
@@ -51,3 +55,31 @@ def test_same_program_same_output_and_parameter_server(ros1: Ros1World, tmp_path
     got = subprocess.run(["rosparam", "get", "/r1/renamed/rate"], env=ros1.env, capture_output=True, text=True,
                          timeout=60, check=True).stdout.strip()
     assert got == "20"
+
+
+@pytest.mark.parametrize("variant", ["real", "robotmodel"])
+def test_subscriber_latched_publisher_and_spin_returning_on_ctrl_c(ros1: Ros1World, tmp_path: Path,
+                                                                   variant: str) -> None:
+    source = HERE / "rospy_echo.py"
+    if variant == "real":
+        path = tmp_path / "real_echo.py"
+        path.write_text(source.read_text().replace("from robotmodel import rospy", "import rospy")
+                        .replace("from robotmodel.msgs.std_msgs import String", "from std_msgs.msg import String"))
+        argv = [SYSTEM_PYTHON, str(path)]
+    else:
+        argv = [sys.executable, str(source)]
+    ros1.env["ROS_VERSION"] = "1"
+    node = ros1.start(*argv)
+    node.wait_line(r"^\[INFO\] \[\d+\.\d{6}\]: ready$", 60)
+    # Latched, and built from its fields: a later real subscriber still gets it.
+    echo = ros1.start("rostopic", "echo", "-n", "1", "/echoed")
+    echo.wait_line(r'^data: "started"$', 60)
+    talker = ros1.start("rostopic", "pub", "-r", "5", "/chatter", "std_msgs/String", "data: hi")
+    node.wait_line(r"^\[INFO\] \[\d+\.\d{6}\]: heard hi$", 60)
+    talker.kill()
+    t0 = time.monotonic()
+    os.killpg(node.popen.pid, signal.SIGINT)
+    node.popen.wait(10)
+    assert time.monotonic() - t0 < 2.0
+    assert node.popen.returncode == 0, "\n".join(node.lines)
+    node.wait_line(r"^spin returned True$", 5)
