@@ -10,8 +10,9 @@ Run: python examples/rospy_tf2_broadcaster.py      (ROS 1: with ROS_VERSION=1 an
 
 import math
 
+from robotmodel.msgs.geometry_msgs.msg import TransformStamped
+
 from robotmodel import rospy, tf2_ros
-from robotmodel.msgs.geometry_msgs import TransformStamped
 
 if __name__ == "__main__":
     rospy.init_node("carrot_broadcaster")

@@ -3,8 +3,9 @@
 Only the import lines differ between its real-rospy and robotmodel runs (see test_rospy_ros1.py).
 """
 
+from robotmodel.msgs.std_msgs.msg import String
+
 from robotmodel import rospy
-from robotmodel.msgs.std_msgs import String
 
 
 def heard(msg, prefix):

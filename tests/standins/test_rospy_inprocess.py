@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import importlib
 import os
 import subprocess
 import sys
@@ -96,3 +97,11 @@ def test_rate_keeps_its_period() -> None:
     for _ in range(6):
         rate.sleep()
     assert 0.25 <= rospy.get_time() - start < 1.0
+
+
+@pytest.mark.parametrize("package", ["builtin_interfaces", "geometry_msgs", "nav_msgs", "rosgraph_msgs",
+                                     "sensor_msgs", "std_msgs", "tf2_msgs"])
+def test_messages_import_from_a_msg_submodule(package: str) -> None:
+    module = importlib.import_module(f"robotmodel.msgs.{package}")
+    assert importlib.import_module(f"robotmodel.msgs.{package}.msg") is module
+    assert module.msg is module

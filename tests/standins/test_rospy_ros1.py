@@ -64,7 +64,7 @@ def test_subscriber_latched_publisher_and_spin_returning_on_ctrl_c(ros1: Ros1Wor
     if variant == "real":
         path = tmp_path / "real_echo.py"
         path.write_text(source.read_text().replace("from robotmodel import rospy", "import rospy")
-                        .replace("from robotmodel.msgs.std_msgs import String", "from std_msgs.msg import String"))
+                        .replace("from robotmodel.msgs.std_msgs.msg import String", "from std_msgs.msg import String"))
         argv = [SYSTEM_PYTHON, str(path)]
     else:
         argv = [sys.executable, str(source)]
@@ -79,7 +79,8 @@ def test_subscriber_latched_publisher_and_spin_returning_on_ctrl_c(ros1: Ros1Wor
     talker.kill()
     t0 = time.monotonic()
     os.killpg(node.popen.pid, signal.SIGINT)
+    node.wait_line(r"^spin returned True$", 10)
     node.popen.wait(10)
-    assert time.monotonic() - t0 < 2.0
+    if variant == "robotmodel":  # real rospy's exit time is its own; only robotmodel's is held to 2 s
+        assert time.monotonic() - t0 < 2.0
     assert node.popen.returncode == 0, "\n".join(node.lines)
-    node.wait_line(r"^spin returned True$", 5)

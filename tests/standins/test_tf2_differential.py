@@ -6,7 +6,7 @@ What is compared is what can be observed: the poses a real rospy tf2_ros listene
 (tf_probe.py) receives, checked against the broadcaster's formula (a frame circling at 2 m,
 one turn per 10 s, angle = stamp * pi / 5), the lines the listener prints (LookupException
 caught first when started before the broadcaster, then the carrot's pose), and that each
-program ends within 2 s of SIGINT.
+of robotmodel's programs ends within 2 s of SIGINT with status 0.
 """
 
 from __future__ import annotations
@@ -31,7 +31,7 @@ PROBE = HERE / "tf_probe.py"
 # robotmodel's import lines and what a rospy user writes instead: nothing else may differ.
 REAL_IMPORTS = {
     "from robotmodel import rospy, tf2_ros": "import rospy\nimport tf2_ros",
-    "from robotmodel.msgs.geometry_msgs import TransformStamped": "from geometry_msgs.msg import TransformStamped",
+    "from robotmodel.msgs.geometry_msgs.msg import TransformStamped": "from geometry_msgs.msg import TransformStamped",
 }
 
 
@@ -66,15 +66,23 @@ def start(ros1: Ros1World, argv: list[str]) -> GroupProc:
     return ros1.start(*argv)
 
 
-def interrupt(proc: GroupProc) -> float:
-    """SIGINT to the program (as Ctrl-C to its process group); seconds until it exited."""
+def interrupt(proc: GroupProc, variant: str) -> None:
+    """SIGINT to the program (as Ctrl-C to its process group): robotmodel's must end, with status 0, within 2 s.
+
+    Real rospy's are only reaped: its listener at times stays for more than 10 s after SIGINT
+    (seen in about one run in five), which is rospy's own behaviour and not what is compared here.
+    """
     t0 = time.monotonic()
     os.killpg(proc.popen.pid, signal.SIGINT)
+    if variant == "real":
+        proc.kill()
+        return
     try:
         proc.popen.wait(10)
     except subprocess.TimeoutExpired:
         pytest.fail(f"{proc.argv} still running 10 s after SIGINT:\n" + "\n".join(proc.lines[-20:]))
-    return time.monotonic() - t0
+    assert time.monotonic() - t0 < 2.0
+    assert proc.popen.returncode == 0, "\n".join(proc.lines)
 
 
 def carrot_pose(angle: float) -> tuple[float, ...]:
@@ -100,8 +108,7 @@ def test_broadcaster_to_a_real_rospy_listener(ros1: Ros1World, tmp_path: Path, v
     gaps = [(b - a) / 1e9 for a, b in itertools.pairwise(stamps)]
     assert all(0.05 < g < 1.0 for g in gaps), gaps  # a 10 Hz stream
     assert broadcaster.popen.poll() is None
-    assert interrupt(broadcaster) < 2.0
-    assert broadcaster.popen.returncode == 0, "\n".join(broadcaster.lines)
+    interrupt(broadcaster, variant)
 
 
 @pytest.mark.parametrize("variant", ["real", "robotmodel"])
@@ -129,6 +136,5 @@ def test_listener_started_first_catches_lookup_exception_then_follows_the_real_b
     first_pose = next(i for i, line in enumerate(listener.lines) if re.search(r"\]: carrot -?\d", line))
     caught = {m.group(1) for line in listener.lines[:first_pose] if (m := re.search(r"no carrot yet: (\w+)", line))}
     assert caught == {"LookupException"}
-    assert interrupt(listener) < 2.0
-    assert listener.popen.returncode == 0, "\n".join(listener.lines)
-    assert interrupt(broadcaster) < 2.0
+    interrupt(listener, variant)
+    interrupt(broadcaster, "real")
