@@ -139,7 +139,8 @@ def init_node(name: str, argv: Sequence[str] | None = None, anonymous: bool = Fa
         store.set(resolve_name("~" + key), value)
     if log_level is not None:
         _log.set_level(log_level)
-    if not disable_signals:
+    # Handlers can only be installed from the main thread; rospy skips them elsewhere too.
+    if not disable_signals and threading.current_thread() is threading.main_thread():
         for sig in (signal.SIGINT, signal.SIGTERM):
             _chain[sig] = signal.signal(sig, _on_signal)
     requested = getattr(node.handle, "shutdown_requested", None)
