@@ -10,8 +10,9 @@ What is here: :func:`init_node` (``anonymous=``, ``argv=`` with ``__name:=``, ``
 ``publish(*args, **kwargs)``), :class:`Subscriber` (``callback_args``), :class:`Rate`,
 :class:`Time`/:class:`Duration`/:func:`get_rostime`/:func:`get_time`, :func:`sleep`,
 :func:`spin`, :func:`is_shutdown`, :func:`on_shutdown`, :func:`signal_shutdown`,
-``loginfo``/``logwarn``/``logerr``/``logfatal``/``logdebug`` (rospy's line format and
-streams), ``get_param``/``set_param``/``has_param``/``search_param``/``delete_param``,
+``loginfo``/``logwarn``/``logerr``/``logfatal``/``logdebug`` with ``_throttle`` and ``_once``
+(rospy's line format and streams), :class:`Timer`, :func:`wait_for_message`,
+``get_param``/``set_param``/``has_param``/``search_param``/``delete_param``,
 :class:`ROSException`, :class:`ROSInterruptException`, :class:`ROSInitException`.
 
 Porting notes (what differs from rospy):
@@ -19,8 +20,7 @@ Porting notes (what differs from rospy):
 - Publishers and Subscribers need :func:`init_node` first (rospy lets them be made before).
 - Time is the wall clock: ``/clock`` and ``use_sim_time`` are not followed; ``sleep``
   returns early at shutdown (rospy's wall-clock sleep sleeps on) and raises nothing, as rospy's.
-- Log lines go to the console only, not to ``/rosout``; ``_throttle``/``_once`` variants,
-  ``wait_for_message``, ``Timer`` and services are not here yet.
+- Log lines go to the console only, not to ``/rosout``; services are not here yet.
 - Messages come from :mod:`robotmodel.msgs` (``from robotmodel.msgs.geometry_msgs import
   TransformStamped``); their stamps are ROS 2's ``sec``/``nanosec``, and rospy's Time and
   Duration carry those names too, so ``t.header.stamp = rospy.Time.now()`` works.
@@ -43,7 +43,28 @@ from robotmodel.rospy._core import (
     sleep,
     spin,
 )
-from robotmodel.rospy._log import DEBUG, ERROR, FATAL, INFO, WARN, logdebug, logerr, logfatal, loginfo, logwarn
+from robotmodel.rospy._log import (
+    DEBUG,
+    ERROR,
+    FATAL,
+    INFO,
+    WARN,
+    logdebug,
+    logdebug_once,
+    logdebug_throttle,
+    logerr,
+    logerr_once,
+    logerr_throttle,
+    logfatal,
+    logfatal_once,
+    logfatal_throttle,
+    loginfo,
+    loginfo_once,
+    loginfo_throttle,
+    logwarn,
+    logwarn_once,
+    logwarn_throttle,
+)
 from robotmodel.rospy._params import (
     delete_param,
     get_param,
@@ -54,6 +75,7 @@ from robotmodel.rospy._params import (
 )
 from robotmodel.rospy._time import Duration, Time, get_rostime, get_time
 from robotmodel.rospy._topics import Publisher, Subscriber
+from robotmodel.rospy._wait import Timer, TimerEvent, wait_for_message
 
 get_caller_id = get_name
 
@@ -71,6 +93,8 @@ __all__ = [
     "Rate",
     "Subscriber",
     "Time",
+    "Timer",
+    "TimerEvent",
     "delete_param",
     "get_caller_id",
     "get_name",
@@ -84,10 +108,20 @@ __all__ = [
     "init_node",
     "is_shutdown",
     "logdebug",
+    "logdebug_once",
+    "logdebug_throttle",
     "logerr",
+    "logerr_once",
+    "logerr_throttle",
     "logfatal",
+    "logfatal_once",
+    "logfatal_throttle",
     "loginfo",
+    "loginfo_once",
+    "loginfo_throttle",
     "logwarn",
+    "logwarn_once",
+    "logwarn_throttle",
     "myargv",
     "on_shutdown",
     "resolve_name",
@@ -96,4 +130,5 @@ __all__ = [
     "signal_shutdown",
     "sleep",
     "spin",
+    "wait_for_message",
 ]

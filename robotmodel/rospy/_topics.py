@@ -40,8 +40,9 @@ class Publisher:
         self.type = getattr(data_class, "__msgtype__", str(data_class))
         depth = queue_size if queue_size else (1 if latch else 10)
         qos = QoS(depth, durability=Durability.TRANSIENT_LOCAL if latch else Durability.VOLATILE)
-        self._pub: Any = _node().create_publisher(data_class, name, qos)
-        self.name = str(getattr(self._pub, "topic", name))
+        node = _node()
+        self._pub: Any = node.create_publisher(data_class, name, qos)
+        self.name = str(node.resolve_topic_name(name))
         self.resolved_name = self.name
 
     def publish(self, *args: Any, **kwds: Any) -> None:
@@ -87,8 +88,9 @@ class Subscriber:
             else:
                 callback(msg, callback_args)
 
-        self._sub: Any = _node().create_subscription(data_class, name, deliver, QoS(queue_size or 10))
-        self.name = str(getattr(self._sub, "topic", name))
+        node = _node()
+        self._sub: Any = node.create_subscription(data_class, name, deliver, QoS(queue_size or 10))
+        self.name = str(node.resolve_topic_name(name))
         self.resolved_name = self.name
 
     def get_num_connections(self) -> int:

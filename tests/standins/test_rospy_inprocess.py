@@ -105,3 +105,39 @@ def test_messages_import_from_a_msg_submodule(package: str) -> None:
     module = importlib.import_module(f"robotmodel.msgs.{package}")
     assert importlib.import_module(f"robotmodel.msgs.{package}.msg") is module
     assert module.msg is module
+
+
+def test_throttle_once_timer_and_wait_for_message() -> None:
+    done = run("""
+        import time
+        from robotmodel import rospy
+        from robotmodel.msgs.std_msgs.msg import String
+        rospy.init_node("n", backend="inprocess", domain_id=6)
+        def both(i):
+            rospy.loginfo_once("once %d", i)
+            rospy.loginfo_throttle(0.2, "throttled %d", i)
+        both(0)
+        both(1)  # at once: neither
+        time.sleep(0.3)
+        both(3)  # a period later: throttled only
+        ticks = []
+        timer = rospy.Timer(rospy.Duration(0.05), ticks.append)
+        time.sleep(0.4)
+        timer.shutdown()
+        first, second = ticks[0], ticks[1]
+        print(first.last_expected is None, second.last_expected == first.current_expected,
+              (second.current_expected - first.current_expected).to_nsec(), 4 <= len(ticks) <= 9)
+        pub = rospy.Publisher("chatter", String, queue_size=1)
+        rospy.Timer(rospy.Duration(0.2), lambda event: pub.publish("late"), oneshot=True)
+        print(rospy.wait_for_message("chatter", String, timeout=5).data)
+        try:
+            rospy.wait_for_message("silent", String, timeout=0.2)
+        except rospy.ROSException as exc:
+            print(exc)
+        """)
+    assert [line.split("]: ", 1)[-1] for line in done.stdout.splitlines()] == [
+        "once 0", "throttled 0", "throttled 3",
+        "True True 50000000 True",
+        "late",
+        "timeout exceeded while waiting for message on topic /silent",
+    ]
