@@ -141,3 +141,18 @@ def test_throttle_once_timer_and_wait_for_message() -> None:
         "late",
         "timeout exceeded while waiting for message on topic /silent",
     ]
+
+
+def test_rospy_style_tf2_ros_classes_use_the_rospy_node() -> None:
+    done = run("""
+        from robotmodel import rospy, tf2_ros
+        # Before init_node: a node of its own, as robotmodel.tf_ros.
+        before = tf2_ros.TransformBroadcaster(backend="inprocess", domain_id=8)
+        rospy.init_node("n", backend="inprocess", domain_id=8)
+        node = rospy.get_node()
+        listener = tf2_ros.TransformListener(tf2_ros.Buffer())
+        print(listener.node is node, tf2_ros.TransformBroadcaster().node is node,
+              tf2_ros.StaticTransformBroadcaster().node is node, before.node is not node)
+        before.close()
+        """)
+    assert done.stdout.split() == ["True"] * 4
