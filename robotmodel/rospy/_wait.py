@@ -38,12 +38,12 @@ class Timer(threading.Thread):
         self._period = period
         self._callback = callback
         self._oneshot = oneshot
-        self._stop = threading.Event()
+        self._ended = threading.Event()
         self.start()
 
     def shutdown(self) -> None:
         """Stop calling the callback."""
-        self._stop.set()
+        self._ended.set()
 
     def run(self) -> None:
         """Call the callback on the period's grid until stopped or shut down."""
@@ -54,9 +54,9 @@ class Timer(threading.Thread):
         last_expected: Time | None = None
         last_real: Time | None = None
         last_duration: float | None = None
-        while not self._stop.is_set() and not _core.is_shutdown():
+        while not self._ended.is_set() and not _core.is_shutdown():
             wait = (expected - get_rostime()).to_sec()
-            if wait > 0 and self._stop.wait(wait):
+            if wait > 0 and self._ended.wait(wait):
                 return
             if _core.is_shutdown():
                 return
@@ -92,7 +92,7 @@ def wait_for_message(topic: str, topic_type: type[Any], timeout: float | Duratio
             if _core.is_shutdown():
                 raise ROSInterruptException("rospy shutdown")
             if deadline is not None and time.monotonic() > deadline:
-                raise ROSException(f"timeout exceeded while waiting for message on topic {sub.name}")
+                raise ROSException(f"timeout exceeded while waiting for message on topic {topic}")  # rospy: as given
         return got[0]
     finally:
         sub.unregister()

@@ -1,7 +1,9 @@
-"""A rospy program for tests/standins: parameters, names, logging, shutdown; run with real rospy and robotmodel's.
+"""A rospy program for tests/standins: parameters, names, wait_for_message, Timer, logging, shutdown.
 
-Only the import line differs between the two runs (see test_rospy_ros1.py).
+Only the import lines differ between the two runs (see test_rospy_ros1.py).
 """
+
+from robotmodel.msgs.std_msgs.msg import String
 
 from robotmodel import rospy
 
@@ -20,6 +22,14 @@ try:
 except KeyError as exc:
     print("KeyError", exc)
 print("time", type(rospy.Time.now().secs).__name__, rospy.Time(3, 5).to_nsec(), rospy.Duration(1.5).to_nsec())
+try:
+    rospy.wait_for_message("silent", String, timeout=0.2)
+except rospy.ROSException as exc:
+    print("ROSException", exc)
+ticks = []
+timer = rospy.Timer(rospy.Duration(0.05), ticks.append, oneshot=True)
+timer.join(5)
+print("timer", len(ticks), ticks[0].last_expected, type(ticks[0].current_real).__name__)
 rospy.loginfo("info %d", 1)
 rospy.logwarn("warn")
 rospy.logerr("err")

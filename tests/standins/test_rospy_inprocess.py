@@ -139,7 +139,7 @@ def test_throttle_once_timer_and_wait_for_message() -> None:
         "once 0", "throttled 0", "throttled 3",
         "True True 50000000 True",
         "late",
-        "timeout exceeded while waiting for message on topic /silent",
+        "timeout exceeded while waiting for message on topic silent",
     ]
 
 

@@ -3,7 +3,7 @@
 What is compared: every line on stdout and on stderr (rospy's log format, timestamps masked;
 INFO on stdout, WARN/ERROR on stderr, DEBUG hidden by default), parameters read from and
 written to the real parameter server (``_param:=`` words, ``~`` names, searchParam,
-deleteParam, KeyError), ``__name:=``/``__ns:=``, on_shutdown hooks.
+deleteParam, KeyError), ``__name:=``/``__ns:=``, wait_for_message's timeout text, a one-shot Timer's event, on_shutdown hooks.
 """
 
 from __future__ import annotations
@@ -39,7 +39,8 @@ def test_same_program_same_output_and_parameter_server(ros1: Ros1World, tmp_path
     subprocess.run(["rosparam", "set", "/r1/shared", "3"], env=ros1.env, check=True, timeout=60)
     real = tmp_path / "real_basics.py"
     text = PROGRAM.read_text()
-    real.write_text(text.replace("from robotmodel import rospy", "import rospy"))
+    real.write_text(text.replace("from robotmodel import rospy", "import rospy")
+                    .replace("from robotmodel.msgs.std_msgs.msg import String", "from std_msgs.msg import String"))
     theirs = run(ros1, [SYSTEM_PYTHON, str(real)])
     got = subprocess.run(["rosparam", "get", "/r1/renamed/rate"], env=ros1.env, capture_output=True, text=True,
                          timeout=60, check=True).stdout.strip()
