@@ -39,6 +39,9 @@ caller (and the CLI) can catch one class and print one line. The tree::
     │   │                           file, namespace (rcl's text; also a ValueError; robotmodel.rcl)
     │   ├── StaticArgsError         static_transform_publisher's words (ROS 2's text; robotmodel.tf_ros)
     │   └── EchoArgsError           tf2_echo's words (its text and exit code; robotmodel.tf_ros)
+    ├── ROSException                rospy's root (see robotmodel.rospy)
+    │   ├── ROSInterruptException   shutdown interrupted a sleep (also a KeyboardInterrupt, as rospy's)
+    │   └── ROSInitException        init_node refused (called twice, a bad name)
     └── TransformException          tf2's root (see robotmodel.tf)
         ├── LookupException
         ├── ConnectivityException
@@ -72,6 +75,9 @@ __all__ = [
     "MessageError",
     "PackageNotFoundError",
     "PublisherError",
+    "ROSException",
+    "ROSInitException",
+    "ROSInterruptException",
     "RecordingError",
     "ResourceError",
     "RevisionError",
@@ -292,3 +298,15 @@ class InvalidArgumentException(TransformException):
 
 class TimeoutException(TransformException):
     """A lookup with a timeout expired before the transform became available."""
+
+
+class ROSException(RobotModelError):
+    """rospy's exception root (robotmodel.rospy raises these where rospy raises its own)."""
+
+
+class ROSInterruptException(ROSException, KeyboardInterrupt):
+    """Shutdown interrupted a sleep (``rospy.sleep``, ``Rate.sleep``), as rospy's: also a KeyboardInterrupt."""
+
+
+class ROSInitException(ROSException):
+    """``init_node`` could not initialize the node (rospy's text)."""

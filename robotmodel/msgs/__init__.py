@@ -2,7 +2,9 @@
 
 Each ROS package is a module, mirroring ``<pkg>.msg``: code written for rclpy carries
 over by changing ``from geometry_msgs.msg import TransformStamped`` into
-``from robotmodel.msgs.geometry_msgs import TransformStamped``. Messages are mutable
+``from robotmodel.msgs.geometry_msgs.msg import TransformStamped`` (each package module is
+also its own ``msg`` submodule; ``from robotmodel.msgs.geometry_msgs import TransformStamped``
+is the same class, and what type checkers follow). Messages are mutable
 dataclasses with ROS 2's defaults; each class names its ROS type in ``__msgtype__``
 (``"geometry_msgs/msg/TransformStamped"``). The classes whose names are unique are
 also exported here; ``Time``, ``Duration`` (builtin_interfaces) and ``Clock``
@@ -19,6 +21,8 @@ encoded (:func:`to_rosbags`, :func:`serialize`): out of range, a
 """
 
 from __future__ import annotations
+
+import sys
 
 from robotmodel.msgs import (
     builtin_interfaces,
@@ -52,6 +56,12 @@ from robotmodel.msgs.nav_msgs import Odometry
 from robotmodel.msgs.sensor_msgs import JointState
 from robotmodel.msgs.std_msgs import Header, String
 from robotmodel.msgs.tf2_msgs import TFMessage
+
+# ``from robotmodel.msgs.geometry_msgs.msg import Pose``, as ROS users write ``from geometry_msgs.msg import
+# Pose``: each package module is its own ``msg`` submodule.
+for _package in (builtin_interfaces, geometry_msgs, nav_msgs, rosgraph_msgs, sensor_msgs, std_msgs, tf2_msgs):
+    sys.modules[_package.__name__ + ".msg"] = _package
+    vars(_package)["msg"] = _package
 
 __all__ = [
     "Header",
