@@ -19,7 +19,7 @@ from robotmodel.errors import RosArgsError
 if TYPE_CHECKING:
     from robotmodel.rcl import RosArgs
 
-__all__ = ["jsp_settings", "run_joint_state_publisher", "run_robot_state_publisher"]
+__all__ = ["description_parameter", "jsp_settings", "run_joint_state_publisher", "run_robot_state_publisher"]
 
 _JSP = "joint_state_publisher"
 _RSP = "robot_state_publisher"
@@ -78,6 +78,24 @@ def _load(file: str | None, mappings: Mapping[str, str], package_paths: Sequence
     return load_source(file, mappings, package_paths=package_paths, untrusted=untrusted)[0]
 
 
+def description_parameter(node: Any, log: Any) -> str | None:
+    """ROS 1's nodes take the robot from the parameter server: ``robot_description`` searched up the namespace.
+
+    As roscpp's ``searchParam`` (urdf's ``initParam``) finds it, from ``node``'s namespace up to
+    ``/``; None on the other wires (ROS 2 has no parameter server) or when it is not set,
+    logged with ROS 1's text.
+    """
+    if node.context.backend.name != "ros1":
+        return None
+    store = node.parameters
+    found = store.search("robot_description")
+    value = store.get(found) if found is not None else None
+    if not isinstance(value, str) or not value:
+        log.error("Could not find parameter robot_description on parameter server")
+        return None
+    return value
+
+
 def run_joint_state_publisher(file: str | None = None, mappings: Mapping[str, str] | None = None, *,
                               package_paths: Sequence[str | os.PathLike[str]] = (), untrusted: bool = False,
                               rate: float = 10.0, zeros: Mapping[str, float] | None = None,
@@ -106,9 +124,13 @@ def run_joint_state_publisher(file: str | None = None, mappings: Mapping[str, st
     desc = _load(file, mappings or {}, package_paths, untrusted)
     stop = stop_on_signals()
     # joint_states, robot_description and relative --source-list topics resolve under the namespace.
-    with Node(name, namespace, connect=list(connect), remappings=ros.remaps) as node, JointStatePublisher(
-            desc, bus=node, logger=log, **settings):
-        stop.wait()
+    with Node(name, namespace, connect=list(connect), remappings=ros.remaps) as node:
+        if desc is None:
+            desc = description_parameter(node, log)
+            if desc is None and node.context.backend.name == "ros1":
+                return 1
+        with JointStatePublisher(desc, bus=node, logger=log, **settings):
+            stop.wait()
     return 0
 
 
@@ -149,12 +171,17 @@ def run_robot_state_publisher(file: str | None = None, mappings: Mapping[str, st
     check_publish_frequency(settings["publish_frequency"])
     # As RSP before 3.5.1: the parameter is the robot; FILE is the fallback when it is empty.
     desc: Any = str(text) if text else _load(file, mappings or {}, package_paths, untrusted)
-    if desc is None:
-        log.critical("robot_description parameter must not be empty")
-        return 1
     stop = stop_on_signals()
     # RSP's topics are relative (joint_states, robot_description): they follow the namespace; /tf does not.
-    with Node(name, namespace, connect=list(connect), remappings=ros.remaps) as node, RobotStatePublisher(
-            desc, bus=node, logger=log, **settings):
-        stop.wait()
+    with Node(name, namespace, connect=list(connect), remappings=ros.remaps) as node:
+        if desc is None:
+            desc = description_parameter(node, log)
+        if desc is None:
+            if node.context.backend.name == "ros1":
+                log.critical("Failed to extract kdl tree from xml robot description")
+            else:
+                log.critical("robot_description parameter must not be empty")
+            return 1
+        with RobotStatePublisher(desc, bus=node, logger=log, **settings):
+            stop.wait()
     return 0
