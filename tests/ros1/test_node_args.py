@@ -85,3 +85,14 @@ def test_rsp_ros1_namespace_and_default_frequency(ros1: Ros1World) -> None:
     wait_until(lambda: "/r1/robot_state_publisher" in ros1.tool("rosnode", "list").split(), 60,
                "/r1/robot_state_publisher in rosnode list")
     assert " * /r1/robot_state_publisher" in ros1.tool("rostopic", "info", "/r1/joint_states")
+
+
+def test_static_transform_publisher_and_tf2_echo_take_ros1_forms(ros1: Ros1World) -> None:
+    # ROS 1's positional form with __name and a remap of /tf_static, echoed by a renamed tf2_echo
+    robotmodel(ros1, "static_transform_publisher", "1", "2", "3", "0", "0", "0", "map", "odom", "__name:=my_stp",
+               "/tf_static:=/r1/tf_static")
+    wait_until(lambda: "/my_stp" in ros1.tool("rosnode", "list").split(), 60, "/my_stp in rosnode list")
+    assert " * /my_stp" in ros1.tool("rostopic", "info", "/r1/tf_static")
+    echo = robotmodel(ros1, "tf2_echo", "map", "odom", "__name:=my_echo", "/tf_static:=/r1/tf_static")
+    echo.wait_line(r"- Translation: \[1\.000, 2\.000, 3\.000\]", 60)
+    assert "/my_echo" in ros1.tool("rosnode", "list").split()
