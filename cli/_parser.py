@@ -32,10 +32,10 @@ class CommandParser(argparse.ArgumentParser):
         ros = None
         if self.takes_ros_args:
             # Before the mappings: '__ns:=/r1' is a ROS remap rule, not a xacro argument.
-            from robotmodel.rcl import RosArgsError, take_ros_args
+            from robotmodel.rcl import RosArgsError, take_node_args
 
             try:
-                ros, words = take_ros_args(words, self.ros_node_name)
+                ros, words = take_node_args(words, self.ros_node_name)
             except RosArgsError as exc:
                 self.exit(2, f"{self.prog}: error: {exc}\n")
         mappings: dict[str, str] = {}

@@ -32,8 +32,8 @@ def register(sub: Any) -> None:
     add_model_arguments(parser, file_optional=True,
                         file_help="a .urdf or .xacro file ('-' reads stdin); not needed with "
                         "--ros-args -p robot_description:=\"$(xacro robot.xacro)\"")
-    parser.add_argument("--publish-frequency", type=float, default=20.0, metavar="HZ",
-                        help="maximum /tf rate, compared on stamps (0 to 1000; default 20; 0: no cap)")
+    parser.add_argument("--publish-frequency", type=float, default=None, metavar="HZ",
+                        help="maximum /tf rate, compared on stamps (0 to 1000; default 20, on ROS 1 50; 0: no cap)")
     parser.add_argument("--frame-prefix", default="", metavar="PREFIX",
                         help="prepended verbatim to every frame id, static ones included")
     parser.add_argument("--ignore-timestamp", action="store_true",

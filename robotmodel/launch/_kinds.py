@@ -47,10 +47,16 @@ _JSP_PARAMS = frozenset({"use_gui", "rate", "zeros", "source_list"})
 
 
 def build_plan(launch: LaunchFile, workdir: Path, *, package_paths: Sequence[Path] = (),
-               browser: bool = True) -> LaunchPlan:
-    """Map the declared nodes to processes; a literal robot_description is written into ``workdir``."""
+               browser: bool = True, ros1: bool = False) -> LaunchPlan:
+    """Map the declared nodes to processes; a literal robot_description is written into ``workdir``.
+
+    ``ros1``: the processes run on the ROS 1 wire, where roslaunch has put the parameters on
+    the parameter server (:func:`robotmodel.launch._ros1params.set_on_server`): a node whose
+    robot_description is found there reads it from there, as ROS 1's nodes do (no FILE words).
+    """
     plan = LaunchPlan(skipped=list(launch.skipped), notes=list(launch.notes))
     mapper = _Mapper(launch.params, workdir, package_paths, browser, launch.packages)
+    mapper.ros1 = ros1
     for node in launch.nodes:
         key = (node.pkg, node.executable)
         label = f"{node.full_name} ({node.pkg}/{node.executable})"
@@ -94,6 +100,7 @@ class _Mapper:
         self.package_paths = list(package_paths)
         self.browser = browser
         self.written = 0
+        self.ros1 = False
 
     def map(self, node: NodeDecl, key: tuple[str, str]) -> ProcessSpec | str:
         if key in _STATIC:
@@ -107,9 +114,11 @@ class _Mapper:
             return ProcessSpec(node.full_name, "rviz", ("view", "--follow", *self._paths(), *found, *self._page()),
                                node.required)
         description = self._description(node)
+        if self.ros1 and self._param(node) is not None:
+            description = ()  # on the server: the node searches it up its namespace itself
+        elif key in _RSP and not description:
+            return "no robot_description parameter for it"
         if key in _RSP:
-            if not description:
-                return "no robot_description parameter for it"
             return ProcessSpec(node.full_name, "robot_state_publisher",
                                ("robot-state-publisher", *description, *self._paths(), *_rsp_options(node)),
                                node.required)
@@ -157,20 +166,7 @@ class _Mapper:
         return tuple(w for p in self.package_paths for w in ("--package-path", str(p)))
 
     def _description(self, node: NodeDecl) -> tuple[str, ...]:
-        param = node.params.get("robot_description")
-        if param is None:
-            # ROS 1 searchParam: the node's namespace, then each parent up to the root; a remap
-            # of the name as written applies first (roscpp matches it unresolved), so
-            # <remap from="robot_description" to="arm_description"/> reads arm_description.
-            key = "robot_description"
-            if node.dialect is Dialect.ROS1:
-                key = next((to for source, to in node.remaps if source == key), key)
-            ns = node.namespace
-            while param is None:
-                param = self.params.get(join_ns(ns, key))
-                if ns == "/" or key.startswith("/"):
-                    break
-                ns = ns.rsplit("/", 1)[0] or "/"
+        param = self._param(node)
         if param is None:
             # ROS 2's joint_state_publisher takes the URDF as its first argument.
             words = _split(node)
@@ -186,6 +182,23 @@ class _Mapper:
         # Leading blanks go: urdfdom's XML parser skips them, an XML declaration may not follow them here.
         path.write_text((param.value or "").lstrip(), encoding="utf-8")
         return (str(path),)
+
+    def _param(self, node: NodeDecl) -> Param | None:
+        param = node.params.get("robot_description")
+        if param is None:
+            # ROS 1 searchParam: the node's namespace, then each parent up to the root; a remap
+            # of the name as written applies first (roscpp matches it unresolved), so
+            # <remap from="robot_description" to="arm_description"/> reads arm_description.
+            key = "robot_description"
+            if node.dialect is Dialect.ROS1:
+                key = next((to for source, to in node.remaps if source == key), key)
+            ns = node.namespace
+            while param is None:
+                param = self.params.get(join_ns(ns, key))
+                if ns == "/" or key.startswith("/"):
+                    break
+                ns = ns.rsplit("/", 1)[0] or "/"
+        return param
 
 
 def _split(node: NodeDecl) -> list[str]:

@@ -44,9 +44,11 @@ def run_launch(target: str, file: str | None = None, mappings: Mapping[str, str]
                package_paths: Sequence[str] = (), dry_run: bool = False, browser: bool = True) -> int:
     """``roslaunch FILE`` (``file`` None: ``target`` is the file) or ``roslaunch PKG FILE``: plan, print, run.
 
-    Prints the notes and skipped nodes, then (unless ``dry_run``, which prints the command
-    lines) runs the processes until SIGINT/SIGTERM, a required exit or all exits. Bad input
-    raises :class:`robotmodel.errors.LaunchError`. Returns the exit code.
+    On the ROS 1 wire the file's parameters go to the parameter server first, as roslaunch
+    puts them there, and the nodes read robot_description from it. Prints the notes and
+    skipped nodes, then (unless ``dry_run``, which prints the command lines) runs the
+    processes until SIGINT/SIGTERM, a required exit or all exits. Bad input raises
+    :class:`robotmodel.errors.LaunchError`. Returns the exit code.
     """
     import shutil
     import tempfile
@@ -56,6 +58,7 @@ def run_launch(target: str, file: str | None = None, mappings: Mapping[str, str]
     from robotmodel.launch._find import find_launch_file
     from robotmodel.launch._kinds import build_plan
     from robotmodel.launch._loader import load_launch_file
+    from robotmodel.rcl import ros1_wire
 
     paths = [Path(p).resolve() for p in package_paths]
     if file is None:
@@ -65,9 +68,14 @@ def run_launch(target: str, file: str | None = None, mappings: Mapping[str, str]
     else:
         path = find_launch_file(target, file, paths)
     launch = load_launch_file(path, dict(mappings or {}), paths)
+    ros1 = ros1_wire()
+    if ros1 and not dry_run:
+        from robotmodel.launch._ros1params import set_on_server
+
+        set_on_server(launch, paths)  # before any node starts, as roslaunch does
     workdir = Path(tempfile.mkdtemp(prefix="robotmodel-launch-"))
     try:
-        plan = build_plan(launch, workdir, package_paths=paths, browser=browser)
+        plan = build_plan(launch, workdir, package_paths=paths, browser=browser, ros1=ros1)
         for note in plan.notes:
             print(f"note: {note}", file=sys.stderr)
         for line in plan.skipped:

@@ -13,7 +13,8 @@ while ``/tf`` and ``/tf_static`` are absolute and shared by every namespace.
   ``ignore_timestamp``.
 - :func:`run_robot_state_publisher`, :func:`run_joint_state_publisher`: the ROS programs
   (``robotmodel robot-state-publisher`` / ``joint-state-publisher``), ROS parameters
-  included (:func:`jsp_settings` maps joint_state_publisher's).
+  included (:func:`jsp_settings` maps joint_state_publisher's); on ROS 1 without FILE the robot
+  is ``robot_description`` on the parameter server (:func:`description_parameter`).
 - :class:`JointStateLogic`: joint_state_publisher's joints, defaults, ``zeros``, mimic
   resolution and ``source_list`` merging, with no bus.
 """
@@ -24,7 +25,12 @@ from robotmodel.publishers._errors import PublisherError
 from robotmodel.publishers._jsp import JointStatePublisher
 from robotmodel.publishers._jsp_joints import DependentJoint, FreeJoint, JointLayout, read_layout
 from robotmodel.publishers._jsp_state import JointStateLogic
-from robotmodel.publishers._programs import jsp_settings, run_joint_state_publisher, run_robot_state_publisher
+from robotmodel.publishers._programs import (
+    description_parameter,
+    jsp_settings,
+    run_joint_state_publisher,
+    run_robot_state_publisher,
+)
 from robotmodel.publishers._rsp import RobotStatePublisher
 from robotmodel.publishers._rsp_state import RobotStateLogic, check_publish_frequency
 
@@ -38,6 +44,7 @@ __all__ = [
     "RobotStateLogic",
     "RobotStatePublisher",
     "check_publish_frequency",
+    "description_parameter",
     "jsp_settings",
     "read_layout",
     "run_joint_state_publisher",

@@ -19,7 +19,7 @@ from robotmodel.errors import RosArgsError
 if TYPE_CHECKING:
     from robotmodel.rcl import RosArgs
 
-__all__ = ["jsp_settings", "run_joint_state_publisher", "run_robot_state_publisher"]
+__all__ = ["description_parameter", "jsp_settings", "run_joint_state_publisher", "run_robot_state_publisher"]
 
 _JSP = "joint_state_publisher"
 _RSP = "robot_state_publisher"
@@ -78,6 +78,24 @@ def _load(file: str | None, mappings: Mapping[str, str], package_paths: Sequence
     return load_source(file, mappings, package_paths=package_paths, untrusted=untrusted)[0]
 
 
+def description_parameter(node: Any, log: Any) -> str | None:
+    """ROS 1's nodes take the robot from the parameter server: ``robot_description`` searched up the namespace.
+
+    As roscpp's ``searchParam`` (urdf's ``initParam``) finds it, from ``node``'s namespace up to
+    ``/``; None on the other wires (ROS 2 has no parameter server) or when it is not set,
+    logged with ROS 1's text.
+    """
+    if node.context.backend.name != "ros1":
+        return None
+    store = node.parameters
+    found = store.search("robot_description")
+    value = store.get(found) if found is not None else None
+    if not isinstance(value, str) or not value:
+        log.error("Could not find parameter robot_description on parameter server")
+        return None
+    return value
+
+
 def run_joint_state_publisher(file: str | None = None, mappings: Mapping[str, str] | None = None, *,
                               package_paths: Sequence[str | os.PathLike[str]] = (), untrusted: bool = False,
                               rate: float = 10.0, zeros: Mapping[str, float] | None = None,
@@ -106,34 +124,53 @@ def run_joint_state_publisher(file: str | None = None, mappings: Mapping[str, st
     desc = _load(file, mappings or {}, package_paths, untrusted)
     stop = stop_on_signals()
     # joint_states, robot_description and relative --source-list topics resolve under the namespace.
-    with Node(name, namespace, connect=list(connect), remappings=ros.remaps) as node, JointStatePublisher(
-            desc, bus=node, logger=log, **settings):
-        stop.wait()
+    with Node(name, namespace, connect=list(connect), remappings=ros.remaps) as node:
+        if desc is None:
+            desc = description_parameter(node, log)
+            if desc is None and node.context.backend.name == "ros1":
+                return 1
+        with JointStatePublisher(desc, bus=node, logger=log, **settings):
+            stop.wait()
     return 0
 
 
 def run_robot_state_publisher(file: str | None = None, mappings: Mapping[str, str] | None = None, *,
                               package_paths: Sequence[str | os.PathLike[str]] = (), untrusted: bool = False,
-                              publish_frequency: float = 20.0, frame_prefix: str = "",
+                              publish_frequency: float | None = None, frame_prefix: str = "",
                               ignore_timestamp: bool = False, connect: Sequence[str] = (), namespace: str = "/",
                               ros: RosArgs | None = None) -> int:
     """robot_state_publisher until SIGINT/SIGTERM: the robot from ``file`` ('-': stdin) or ``-p robot_description``.
 
     The node's ROS parameters in ``ros`` win over the keyword settings; a parameter of the
     wrong type prints rclcpp's text and gives 2; no robot at all logs RSP's FATAL line and
-    gives 1. Returns the exit code.
+    gives 1. ``publish_frequency`` None: RSP's default (20 Hz; 50 on ROS 1). On the ROS 1
+    wire it is ROS 1's RSP: private parameters ``~publish_frequency``, ``~tf_prefix``
+    (searched up the namespace), ``~ignore_timestamp`` on the parameter server (the command
+    line's ``_param:=`` values are set there first), the robot from FILE or the server's
+    ``robot_description``. Returns the exit code.
     """
     from robotmodel.bus import Node
     from robotmodel.publishers._rsp import RobotStatePublisher
     from robotmodel.publishers._rsp_state import check_publish_frequency
-    from robotmodel.rcl import RosArgs, logger_name, node_params, ros_console, typed_param, warn_unused_params
+    from robotmodel.rcl import (
+        RosArgs,
+        logger_name,
+        node_params,
+        ros1_wire,
+        ros_console,
+        typed_param,
+        warn_unused_params,
+    )
     from robotmodel.signals import stop_on_signals
 
     ros = ros or RosArgs()
     name = ros.node_name or _RSP
     log = ros_console(logger_name(namespace, name))
-    settings: dict[str, Any] = {"publish_frequency": publish_frequency, "ignore_timestamp": ignore_timestamp,
-                                "frame_prefix": frame_prefix}
+    if ros1_wire():
+        return _run_ros1_rsp(file, mappings or {}, package_paths, untrusted, publish_frequency, frame_prefix,
+                             ignore_timestamp, connect, namespace, name, ros, log)
+    settings: dict[str, Any] = {"publish_frequency": 20.0 if publish_frequency is None else publish_frequency,
+                                "ignore_timestamp": ignore_timestamp, "frame_prefix": frame_prefix}
     try:
         values = node_params(ros, namespace, name)
         for param, kind in (("publish_frequency", "double"), ("ignore_timestamp", "bool"),
@@ -157,4 +194,53 @@ def run_robot_state_publisher(file: str | None = None, mappings: Mapping[str, st
     with Node(name, namespace, connect=list(connect), remappings=ros.remaps) as node, RobotStatePublisher(
             desc, bus=node, logger=log, **settings):
         stop.wait()
+    return 0
+
+
+def _private_params(node: Any, ros: RosArgs, namespace: str, name: str) -> Any:
+    """ROS 1: the command line's ``_param:=`` values set as ``~param`` on the server (as rospy and roscpp do)."""
+    from robotmodel.rcl import node_params
+
+    store = node.parameters
+    for param, value in node_params(ros, namespace, name).items():
+        store.set("~" + param, value)
+    return store
+
+
+def _run_ros1_rsp(file: str | None, mappings: Mapping[str, str], package_paths: Sequence[str | os.PathLike[str]],
+                  untrusted: bool, publish_frequency: float | None, frame_prefix: str, ignore_timestamp: bool,
+                  connect: Sequence[str], namespace: str, name: str, ros: RosArgs, log: Any) -> int:
+    """ROS 1's robot_state_publisher: ``~publish_frequency`` (50), ``~tf_prefix`` (searched), robot from the server."""
+    from robotmodel.bus import Node
+    from robotmodel.publishers._rsp import RobotStatePublisher
+    from robotmodel.publishers._rsp_state import check_publish_frequency
+    from robotmodel.signals import stop_on_signals
+
+    desc: Any = _load(file, mappings, package_paths, untrusted)
+    stop = stop_on_signals()
+    with Node(name, namespace, connect=list(connect), remappings=ros.remaps) as node:
+        store = _private_params(node, ros, namespace, name)
+
+        def param(key: str, kinds: tuple[type, ...], default: Any) -> Any:
+            value = store.get(key) if store.has(key) else default
+            if not isinstance(value, kinds) or isinstance(value, bool) is not (bool in kinds):
+                log.error("parameter %s: %r is not a %s; using %r", key, value, kinds[0].__name__, default)
+                return default
+            return value
+
+        hz = float(param("~publish_frequency", (float, int), 50.0 if publish_frequency is None else publish_frequency))
+        # tf_prefix is searched up from the private namespace, as RSP's n_tilde.searchParam does.
+        prefix_key = store.search("tf_prefix")
+        prefix = str(param(prefix_key, (str,), "")) if prefix_key else ""
+        prefix = prefix.strip("/")
+        settings: dict[str, Any] = {"publish_frequency": check_publish_frequency(hz),
+                    "ignore_timestamp": bool(param("~ignore_timestamp", (bool,), ignore_timestamp)),
+                    "frame_prefix": f"{prefix}/" if prefix else frame_prefix}
+        if desc is None:
+            desc = description_parameter(node, log)
+        if desc is None:
+            log.critical("Failed to extract kdl tree from xml robot description")
+            return 1
+        with RobotStatePublisher(desc, bus=node, logger=log, **settings):
+            stop.wait()
     return 0

@@ -7,6 +7,8 @@
   merged as rcl and rclcpp do (:func:`node_params`, :func:`typed_param`), the logging and
   enclave flags accepted; anything else is refused with rcl's text
   (:class:`robotmodel.errors.RosArgsError`). :func:`remove_ros_args` is rclpy's.
+- ROS 1's forms on the ROS 1 wire (``__name:=``, ``__ns:=``, ``from:=to``, ``_param:=value``):
+  :func:`take_node_args` reads them after the ``--ros-args`` blocks (:mod:`robotmodel.rcl._ros1args`).
 - The node's name and namespace as ROS settles them (:func:`node_namespace`,
   :func:`split_ros_words`), and its logger name (:func:`logger_name`).
 - rcutils' console lines (``[WARN] [sec.nanosec] [node]: text``): :func:`ros_log`,
@@ -34,6 +36,7 @@ from robotmodel.rcl._args import (
     remove_ros_args,
     split_node_words,
     split_ros_words,
+    take_node_args,
     take_ros_args,
     warn_ignored_params,
 )
@@ -49,10 +52,12 @@ from robotmodel.rcl._params import (
     typed_param,
     warn_unused_params,
 )
+from robotmodel.rcl._ros1args import Ros1Words, ros1_wire, take_ros1_args
 
 __all__ = [
     "ParamEntry",
     "ParamValue",
+    "Ros1Words",
     "RosArgs",
     "RosArgsError",
     "is_param_name",
@@ -65,10 +70,13 @@ __all__ = [
     "param_type_name",
     "params_for_node",
     "remove_ros_args",
+    "ros1_wire",
     "ros_console",
     "ros_log",
     "split_node_words",
     "split_ros_words",
+    "take_node_args",
+    "take_ros1_args",
     "take_ros_args",
     "typed_param",
     "warn_ignored_params",

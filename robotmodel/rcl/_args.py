@@ -25,8 +25,8 @@ absolute ones such as ``/tf`` do not, unless a remap rule says so.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-from dataclasses import dataclass
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, replace
 from typing import Any
 
 from robotmodel.errors import RosArgsError
@@ -39,6 +39,7 @@ __all__ = [
     "remove_ros_args",
     "split_node_words",
     "split_ros_words",
+    "take_node_args",
     "take_ros_args",
     "warn_ignored_params",
 ]
@@ -149,6 +150,24 @@ def take_ros_args(words: Sequence[str], node_name: str | None = None) -> tuple[R
     return RosArgs(found.get("namespace"), found.get("node_name"), tuple(remaps), tuple(params)), rest
 
 
+def take_node_args(words: Sequence[str], node_name: str | None = None,
+                   environ: Mapping[str, str] | None = None) -> tuple[RosArgs, list[str]]:
+    """A node command's ROS arguments: ``--ros-args`` blocks, then on the ROS 1 wire ROS 1's forms.
+
+    ROS 1's words (:mod:`robotmodel.rcl._ros1args`) add to what the blocks set (a block's
+    ``__ns``/``__node`` wins over them); ``environ`` (default ``os.environ``) picks the wire.
+    """
+    from robotmodel.rcl._ros1args import ros1_wire, take_ros1_args
+
+    ros, rest = take_ros_args(words, node_name)
+    if not ros1_wire(environ):
+        return ros, rest
+    ros1, rest = take_ros1_args(rest)
+    return replace(ros, namespace=ros.namespace if ros.namespace is not None else ros1.namespace,
+                   node_name=ros.node_name if ros.node_name is not None else ros1.node_name,
+                   remaps=ros1.remaps + ros.remaps, params=ros1.params + ros.params), rest
+
+
 def _trailing(flag: str) -> str:
     if flag in _REMAP_FLAGS:
         return f"Couldn't parse trailing {flag} flag. No remap rule found."
@@ -177,7 +196,7 @@ def split_ros_words(words: Sequence[str], node_name: str | None = None) -> tuple
 
     Takes the ``--ros-args`` blocks and ``--namespace NS`` / ``--namespace=NS`` out.
     """
-    ros, words = take_ros_args(words, node_name)
+    ros, words = take_node_args(words, node_name)
     rest: list[str] = []
     option: str | None = None
     i = 0

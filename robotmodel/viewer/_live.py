@@ -92,6 +92,19 @@ def _watch_descriptions(topic: _Descriptions, viewer: Any, stop: threading.Event
                 viewer.set_description(desc)
 
 
+def _parameter_description(node: Any) -> RobotDescription | None:
+    """On ROS 1, the robot on the parameter server (``robot_description`` up the namespace), as rviz reads it."""
+    import logging
+
+    from robotmodel.model import parse_urdf
+    from robotmodel.publishers import description_parameter
+
+    if node.context.backend.name != "ros1":
+        return None
+    text = description_parameter(node, logging.getLogger("robotmodel.viewer"))
+    return None if text is None else parse_urdf(text)
+
+
 def _follow(node: Any, viewer: Any) -> Any:
     from robotmodel.msgs import JointState
 
@@ -182,6 +195,9 @@ class LiveViewer:
 
             self.node = Node(node_name, namespace, connect=list(connect), remappings=list(remappings))
             self._closers.append(self.node)
+        if description is None and self.node is not None:
+            description = _parameter_description(self.node)
+            self.description = description
         self._topic = _Descriptions(self.node) if description is None else None
         if self._topic is not None:
             self._closers.insert(0, self._topic)
