@@ -203,7 +203,7 @@ class Ros1World:
                 if b"rosmaster" in cmdline or b"rosout" in cmdline:
                     os.kill(pid, signal.SIGKILL)
         wait_until(lambda: not any(b"rosmaster" in _cmdline(pid) or b"rosout" in _cmdline(pid)
-                                   for pid in self.started_here()), 15, "the master's processes to end")
+                                   for pid in self.started_here()), 60, "the master's processes to end")
         self.roscore.kill()
 
     def reap(self) -> None:
@@ -219,7 +219,7 @@ class Ros1World:
                 os.kill(pid, signal.SIGKILL)
         for proc in self.procs:
             proc.kill()
-        wait_until(lambda: not self.started_here(), 15, f"every process on {self.uri} to end")
+        wait_until(lambda: not self.started_here(), 60, f"every process on {self.uri} to end")
 
 
 def _cmdline(pid: int) -> bytes:
