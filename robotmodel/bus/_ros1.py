@@ -28,7 +28,6 @@ the master's parameter server (:class:`Ros1Parameters`). A node told to shut dow
 
 from __future__ import annotations
 
-import hashlib
 import logging
 import threading
 import time
@@ -38,8 +37,6 @@ from typing import Any
 from robotmodel.bus._backend import (
     ROS1,
     Backend,
-    Entity,
-    EntityKind,
     GraphCallback,
     Handle,
     MessageType,
@@ -52,33 +49,15 @@ from robotmodel.bus._backend import (
     SampleInfo,
 )
 from robotmodel.bus._qos import DEFAULT_DEPTH, History, QoS
-from robotmodel.bus._warn import Warner
+from robotmodel.bus._ros1_graph import GRAPH_PERIOD_S, GraphPoller, GraphWatch, ros1_gid, ros2_type_name
 from robotmodel.errors import BusError, MasterError
 
 __all__ = ["GRAPH_PERIOD_S", "Ros1Backend", "Ros1Parameters", "ros1_gid"]
 
 _log = logging.getLogger("robotmodel.bus")
 
-#: Seconds between two polls of the master's graph.
-GRAPH_PERIOD_S = 0.5
 # A keep-all publisher's per-subscriber queue: never drops in practice (rospy: queue_size=None).
 _UNBOUNDED = 2**31 - 1
-
-
-def ros1_gid(callerid: str, topic: str) -> bytes:
-    """The 16-byte id of ``callerid``'s publisher of ``topic`` (ROS 1 has none: derived, stable)."""
-    return hashlib.blake2b(f"{callerid}\0{topic}".encode(), digest_size=16).digest()
-
-
-def _ros2_type(name: str) -> str:
-    parts = name.split("/")
-    return f"{parts[0]}/msg/{parts[1]}" if len(parts) == 2 and all(parts) else name
-
-
-def _split(callerid: str) -> tuple[str, str]:
-    """(name, namespace) of a caller id: ``/a/b/talker`` -> ``("talker", "/a/b")``."""
-    ns, _, name = callerid.rstrip("/").rpartition("/")
-    return name, ns or "/"
 
 
 class Ros1Parameters(ParameterStore):
@@ -187,7 +166,7 @@ class _Subscription(Handle):
             gid = self._gids.get(callerid)
             if gid is None:
                 gid = self._gids[callerid] = ros1_gid(callerid, self.topic)
-            typename = self._typename or _ros2_type(header.get("type", ""))
+            typename = self._typename or ros2_type_name(header.get("type", ""))
             self._callback(Sample(self.topic, typename, data, SampleInfo(seq, time.time_ns(), gid, callerid)))
 
     def close(self) -> None:
@@ -259,99 +238,6 @@ class Ros1NodeHandle(NodeHandle):
         self.backend.forget(self)
 
 
-class _GraphPoller:
-    """Follows the master's graph and tells the watchers what came and went."""
-
-    def __init__(self, backend: Ros1Backend) -> None:
-        from robotmodel.ros1 import MasterClient
-
-        self._master = MasterClient(backend.master_uri, "/robotmodel_graph", timeout=5.0)
-        self._lock = threading.Lock()
-        self._entities: dict[str, Entity] = {}
-        self._watchers: list[GraphCallback] = []
-        self._wake = threading.Event()
-        self._stop = threading.Event()
-        self._warner = Warner()
-        self._thread: threading.Thread | None = None
-
-    def add(self, callback: GraphCallback) -> None:
-        with self._lock:
-            if self._thread is None:
-                self._thread = threading.Thread(target=self._run, name="ros1-graph", daemon=True)
-                self._thread.start()
-        self.poll()  # the watcher starts with the graph as the master has it now
-        with self._lock:
-            for key, entity in self._entities.items():
-                callback(key, entity)
-            self._watchers.append(callback)
-
-    def remove(self, callback: GraphCallback) -> None:
-        with self._lock:
-            if callback in self._watchers:
-                self._watchers.remove(callback)
-
-    def _snapshot(self) -> dict[str, Entity]:
-        pubs, subs, srvs = self._master.get_system_state()
-        types = {topic: _ros2_type(t) for topic, t in self._master.get_topic_types()}
-        found: dict[str, Entity] = {}
-        callers: set[str] = set()
-        for kind, entries in ((EntityKind.PUBLISHER, pubs), (EntityKind.SUBSCRIPTION, subs),
-                              (EntityKind.SERVICE, srvs)):
-            for topic, nodes in entries:
-                for caller in nodes:
-                    callers.add(caller)
-                    name, ns = _split(caller)
-                    gid = ros1_gid(caller, topic) if kind is EntityKind.PUBLISHER else b""
-                    found[f"{kind.value} {caller} {topic}"] = Entity(
-                        kind, name, ns, topic=topic, typename=types.get(topic, ""), gid=gid, node_key=caller)
-        for caller in callers:
-            name, ns = _split(caller)
-            found[f"node {caller}"] = Entity(EntityKind.NODE, name, ns, node_key=caller)
-        return found
-
-    def poll(self) -> None:
-        try:
-            now = self._snapshot()
-        except (MasterError, ValueError, TypeError) as exc:
-            self._warner.warn("master", f"cannot read the ROS 1 graph: {exc}")
-            return
-        with self._lock:
-            old, self._entities = self._entities, now
-            watchers = list(self._watchers)
-            changes: list[tuple[str, Entity | None]] = [(k, None) for k in old if k not in now]
-            changes += [(k, e) for k, e in now.items() if old.get(k) != e]
-            for key, entity in changes:
-                for callback in watchers:
-                    callback(key, entity)
-
-    def _run(self) -> None:
-        while not self._stop.is_set():
-            self._wake.wait(GRAPH_PERIOD_S)
-            self._wake.clear()
-            if self._stop.is_set():
-                return
-            self.poll()
-
-    def wake(self) -> None:
-        self._wake.set()
-
-    def close(self) -> None:
-        self._stop.set()
-        self._wake.set()
-        thread = self._thread
-        if thread is not None and thread is not threading.current_thread():
-            thread.join(timeout=10)
-
-
-class _Watch(Handle):
-    def __init__(self, poller: _GraphPoller, callback: GraphCallback) -> None:
-        self._poller = poller
-        self._callback = callback
-
-    def close(self) -> None:
-        self._poller.remove(self._callback)
-
-
 class Ros1Backend(Backend):
     """A session on a ROS 1 master (see the module docstring)."""
 
@@ -363,7 +249,7 @@ class Ros1Backend(Backend):
         self.master_uri = master_uri
         self._lock = threading.Lock()
         self._nodes: list[Ros1NodeHandle] = []
-        self._poller = _GraphPoller(self)
+        self._poller = GraphPoller(self.master_uri)
         self._closed = False
 
     @classmethod
@@ -405,7 +291,7 @@ class Ros1Backend(Backend):
     def watch_graph(self, callback: GraphCallback) -> Handle:
         """See :meth:`Backend.watch_graph` (the master's graph, polled)."""
         self._poller.add(callback)
-        return _Watch(self._poller, callback)
+        return GraphWatch(self._poller, callback)
 
     def qos_incompatibility(self, publisher: QoS, subscription: QoS) -> str:
         """ROS 1 has no QoS: every pair matches."""
