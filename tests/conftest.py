@@ -1,10 +1,12 @@
-"""Shared test fixtures: where the real robot files are."""
+"""Shared test fixtures: where the real robot files are, and a private real ROS 1 master."""
 
 from __future__ import annotations
 
 import os
 import sysconfig
+from collections.abc import Iterator
 from pathlib import Path
+from typing import Any
 
 import pytest
 from hypothesis import HealthCheck, settings
@@ -57,3 +59,21 @@ def corpus() -> Path:
     if not CORPUS.is_dir():
         pytest.skip(CORPUS_MISSING)
     return CORPUS
+
+
+@pytest.fixture
+def ros1(tmp_path: Path) -> Iterator[Any]:
+    """A private real roscore for this test, reaped with all it started (skips where Debian's ROS 1 is absent).
+
+    Imported here, not at the top: ``ros1helpers`` probes for ROS 1 once, which only the
+    tests that use this fixture (tests/ros1, tests/standins) should pay for.
+    """
+    from ros1helpers import MISSING, Ros1World
+
+    if MISSING:
+        pytest.skip(MISSING)
+    world = Ros1World(tmp_path / "ros_home")
+    try:
+        yield world
+    finally:
+        world.reap()
