@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import random
 import re
 import shutil
 import signal
@@ -49,6 +50,23 @@ def free_port() -> int:
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
         return int(s.getsockname()[1])
+
+
+def master_port() -> int:
+    """A free loopback port below the kernel's ephemeral range, for a roscore.
+
+    Below that range no other process's ``bind(0)`` (a TCPROS server, a slave API, a test's
+    free_port) can take it between this check and roscore's own bind.
+    """
+    low = int(Path("/proc/sys/net/ipv4/ip_local_port_range").read_text().split()[0])
+    while True:
+        port = random.randrange(10000, max(low, 10001))
+        with socket.socket() as s:
+            try:
+                s.bind(("127.0.0.1", port))
+            except OSError:
+                continue
+            return port
 
 
 def wait_until(predicate: Callable[[], Any], timeout: float, what: str) -> Any:
@@ -119,20 +137,32 @@ class Ros1World:
     """One test's private roscore and everything started against it."""
 
     def __init__(self, home: Path) -> None:
-        self.port = free_port()
-        self.uri = f"http://127.0.0.1:{self.port}"
         home.mkdir(parents=True, exist_ok=True)
         self.home = home
-        self.env = dict(os.environ)
-        self.env.update(ROS_MASTER_URI=self.uri, ROS_HOSTNAME="127.0.0.1", ROS_HOME=str(home),
-                        ROS_LOG_DIR=str(home / "log"), PYTHONUNBUFFERED="1")
-        for var in ("ROS_IP", "ROS_NAMESPACE"):
-            self.env.pop(var, None)
         self.procs: list[GroupProc] = []
         self.nodes: list[Ros1Node] = []
-        self.master = MasterClient(self.uri, "/pytest")
-        self.roscore = self.start("roscore", "-p", str(self.port))
-        wait_until(self._master_up, 60, f"roscore on {self.uri}")
+        # Should the port be taken all the same (another test's roscore picked it), roscore
+        # exits or never answers: after 30 s another port is tried.
+        for _ in range(3):
+            self.port = master_port()
+            self.uri = f"http://127.0.0.1:{self.port}"
+            self.env = dict(os.environ)
+            self.env.update(ROS_MASTER_URI=self.uri, ROS_HOSTNAME="127.0.0.1", ROS_HOME=str(home),
+                            ROS_LOG_DIR=str(home / "log"), PYTHONUNBUFFERED="1")
+            for var in ("ROS_IP", "ROS_NAMESPACE"):
+                self.env.pop(var, None)
+            self.master = MasterClient(self.uri, "/pytest")
+            self.roscore = self.start("roscore", "-p", str(self.port))
+            deadline = time.monotonic() + 30
+            while time.monotonic() < deadline and self.roscore.popen.poll() is None:
+                if self._master_up():
+                    return
+                time.sleep(0.1)
+            if self._master_up():
+                return
+            self.reap()
+            self.procs.clear()
+        pytest.fail(f"roscore did not start on three ports; last output: {self.roscore.lines[-5:]}")
 
     def _master_up(self) -> bool:
         try:
