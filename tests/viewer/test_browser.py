@@ -132,10 +132,12 @@ def test_slider_publishes_joint_states_seen_by_another_process(bus: Bus, tmp_pat
             browser.evaluate("""(() => { const s = document.getElementById("joint-panda_joint2");
                 s.value = 7500; s.dispatchEvent(new Event("input")); return true; })()""")
             shown = float(browser.evaluate("window.robotmodel.positions['panda_joint2']"))
+            # The page sends the move over its websocket asynchronously: the browser stays open until
+            # the other process has it (closing it at once lost the message under a loaded machine).
+            match = listener.wait_line(r"^panda_joint2 (0\.[1-9]\d*)$", timeout=30)
         # joint_state_publisher_gui's mapping: min + (max - min) * step / 10000.
         expected = -1.7628 + (1.7628 + 1.7628) * 0.75
         assert shown == pytest.approx(expected)
-        match = listener.wait_line(r"^panda_joint2 (0\.[1-9]\d*)$", timeout=30)
         assert float(match.group(1)) == pytest.approx(expected, abs=1e-9)
     finally:
         listener.stop(signal.SIGTERM)
