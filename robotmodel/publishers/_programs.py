@@ -207,6 +207,14 @@ def _private_params(node: Any, ros: RosArgs, namespace: str, name: str) -> Any:
     return store
 
 
+def _tf_prefix(prefix: str) -> str:
+    """The text ROS 1's RSP (1.15.2) puts before each frame for ``~tf_prefix``: tf's resolve, less one leading slash.
+
+    Measured against Debian's: ``/pfx`` gives ``pfx/world``, ``pfx/`` gives ``pfx//world``, ``/`` gives ``/world``.
+    """
+    return prefix.removeprefix("/") + "/"
+
+
 def _run_ros1_rsp(file: str | None, mappings: Mapping[str, str], package_paths: Sequence[str | os.PathLike[str]],
                   untrusted: bool, publish_frequency: float | None, frame_prefix: str, ignore_timestamp: bool,
                   connect: Sequence[str], namespace: str, name: str, ros: RosArgs, log: Any) -> int:
@@ -229,13 +237,13 @@ def _run_ros1_rsp(file: str | None, mappings: Mapping[str, str], package_paths: 
             return value
 
         hz = float(param("~publish_frequency", (float, int), 50.0 if publish_frequency is None else publish_frequency))
-        # tf_prefix is searched up from the private namespace, as RSP's n_tilde.searchParam does.
+        # tf_prefix is searched up from the private namespace (the master starts at the caller id),
+        # as RSP's n_tilde.searchParam does.
         prefix_key = store.search("tf_prefix")
         prefix = str(param(prefix_key, (str,), "")) if prefix_key else ""
-        prefix = prefix.strip("/")
         settings: dict[str, Any] = {"publish_frequency": check_publish_frequency(hz),
                     "ignore_timestamp": bool(param("~ignore_timestamp", (bool,), ignore_timestamp)),
-                    "frame_prefix": f"{prefix}/" if prefix else frame_prefix}
+                    "frame_prefix": _tf_prefix(prefix) if prefix else frame_prefix}
         if desc is None:
             desc = description_parameter(node, log)
         if desc is None:
