@@ -109,15 +109,17 @@ def run_joint_state_publisher(file: str | None = None, mappings: Mapping[str, st
     """
     from robotmodel.bus import Node
     from robotmodel.publishers._jsp import JointStatePublisher
-    from robotmodel.rcl import RosArgs, logger_name, node_params, ros_console
+    from robotmodel.publishers._ros1params import private_params, ros1_jsp_settings
+    from robotmodel.rcl import RosArgs, logger_name, node_params, ros1_wire, ros_console
     from robotmodel.signals import stop_on_signals
 
     ros = ros or RosArgs()
     name = ros.node_name or _JSP
     log = ros_console(logger_name(namespace, name))
+    on_ros1 = ros1_wire()
     try:
-        settings = jsp_settings(node_params(ros, namespace, name), log.warning, rate=rate, zeros=dict(zeros or {}),
-                                source_list=source_list)
+        settings = {} if on_ros1 else jsp_settings(node_params(ros, namespace, name), log.warning, rate=rate,
+                                                   zeros=dict(zeros or {}), source_list=source_list)
     except RosArgsError as exc:
         print(f"robotmodel joint-state-publisher: error: {exc}", file=sys.stderr)
         return 2
@@ -125,6 +127,13 @@ def run_joint_state_publisher(file: str | None = None, mappings: Mapping[str, st
     stop = stop_on_signals()
     # joint_states, robot_description and relative --source-list topics resolve under the namespace.
     with Node(name, namespace, connect=list(connect), remappings=ros.remaps) as node:
+        if on_ros1:  # ROS 1's JSP reads its settings from the parameter server
+            try:
+                settings = ros1_jsp_settings(private_params(node, ros, namespace, name), log.warning, rate=rate,
+                                             zeros=dict(zeros or {}), source_list=source_list)
+            except RosArgsError as exc:
+                print(f"robotmodel joint-state-publisher: error: {exc}", file=sys.stderr)
+                return 2
         if desc is None:
             desc = description_parameter(node, log)
             if desc is None and node.context.backend.name == "ros1":
@@ -197,29 +206,12 @@ def run_robot_state_publisher(file: str | None = None, mappings: Mapping[str, st
     return 0
 
 
-def _private_params(node: Any, ros: RosArgs, namespace: str, name: str) -> Any:
-    """ROS 1: the command line's ``_param:=`` values set as ``~param`` on the server (as rospy and roscpp do)."""
-    from robotmodel.rcl import node_params
-
-    store = node.parameters
-    for param, value in node_params(ros, namespace, name).items():
-        store.set("~" + param, value)
-    return store
-
-
-def _tf_prefix(prefix: str) -> str:
-    """The text ROS 1's RSP (1.15.2) puts before each frame for ``~tf_prefix``: tf's resolve, less one leading slash.
-
-    Measured against Debian's: ``/pfx`` gives ``pfx/world``, ``pfx/`` gives ``pfx//world``, ``/`` gives ``/world``.
-    """
-    return prefix.removeprefix("/") + "/"
-
-
 def _run_ros1_rsp(file: str | None, mappings: Mapping[str, str], package_paths: Sequence[str | os.PathLike[str]],
                   untrusted: bool, publish_frequency: float | None, frame_prefix: str, ignore_timestamp: bool,
                   connect: Sequence[str], namespace: str, name: str, ros: RosArgs, log: Any) -> int:
     """ROS 1's robot_state_publisher: ``~publish_frequency`` (50), ``~tf_prefix`` (searched), robot from the server."""
     from robotmodel.bus import Node
+    from robotmodel.publishers._ros1params import private_params, tf_prefix_text
     from robotmodel.publishers._rsp import RobotStatePublisher
     from robotmodel.publishers._rsp_state import check_publish_frequency
     from robotmodel.signals import stop_on_signals
@@ -227,7 +219,7 @@ def _run_ros1_rsp(file: str | None, mappings: Mapping[str, str], package_paths: 
     desc: Any = _load(file, mappings, package_paths, untrusted)
     stop = stop_on_signals()
     with Node(name, namespace, connect=list(connect), remappings=ros.remaps) as node:
-        store = _private_params(node, ros, namespace, name)
+        store = private_params(node, ros, namespace, name)
 
         def param(key: str, kinds: tuple[type, ...], default: Any) -> Any:
             value = store.get(key) if store.has(key) else default
@@ -243,7 +235,7 @@ def _run_ros1_rsp(file: str | None, mappings: Mapping[str, str], package_paths: 
         prefix = str(param(prefix_key, (str,), "")) if prefix_key else ""
         settings: dict[str, Any] = {"publish_frequency": check_publish_frequency(hz),
                     "ignore_timestamp": bool(param("~ignore_timestamp", (bool,), ignore_timestamp)),
-                    "frame_prefix": _tf_prefix(prefix) if prefix else frame_prefix}
+                    "frame_prefix": tf_prefix_text(prefix) if prefix else frame_prefix}
         if desc is None:
             desc = description_parameter(node, log)
         if desc is None:

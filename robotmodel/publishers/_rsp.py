@@ -22,9 +22,10 @@ class RobotStatePublisher:
     """ROS 2's robot_state_publisher as an object: give it a robot and a bus node.
 
     On start it publishes ``robot_description`` (std_msgs/String, transient local depth 1:
-    a late joiner gets it; not on the ROS 1 wire, where ROS 1's RSP has no such topic) and the fixed joints on ``/tf_static`` (latched); then each
-    JointState on ``joint_states`` (in the node's namespace, as RSP subscribes) gives the
-    moving joints on ``/tf``. See :class:`RobotStateLogic` for the rules.
+    a late joiner gets it; not on the ROS 1 wire, where ROS 1's RSP has no such topic) and
+    the fixed joints on ``/tf_static`` (latched); then each JointState on ``joint_states``
+    (in the node's namespace, as RSP subscribes) gives the moving joints on ``/tf``. See
+    :class:`RobotStateLogic` for the rules.
 
     ``bus`` is a :class:`robotmodel.bus.Node`, left open on :meth:`close`; without one the
     publisher opens a node named ``robot_state_publisher`` (``node_options`` such as
