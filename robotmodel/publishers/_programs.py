@@ -28,11 +28,12 @@ _BOOLS = ("publish_default_positions", "publish_default_velocities", "publish_de
 _WHY = {
     "dependent_joints": "joint_state_publisher replaces it with the URDF's mimic tags once a robot is loaded",
     "robot_description": "joint_state_publisher reads the robot from FILE or the robot_description topic",
-    "use_sim_time": "there is no /clock here",
+    "use_sim_time": "on ROS 2 wires time is the system's (on ROS 1, /use_sim_time is followed)",
     "qos_overrides": "QoS overrides are not read here",
 }
 _RSP_PARAMS = frozenset({"robot_description", "publish_frequency", "ignore_timestamp", "frame_prefix"})
-_RSP_WHY = {"use_sim_time": "there is no /clock here", "qos_overrides": "QoS overrides are not read here"}
+_RSP_WHY = {"use_sim_time": "on ROS 2 wires time is the system's (on ROS 1, /use_sim_time is followed)",
+            "qos_overrides": "QoS overrides are not read here"}
 
 
 def jsp_settings(values: Mapping[str, Any], warn: Callable[[str], None], *, rate: float = 10.0,
@@ -107,7 +108,7 @@ def run_joint_state_publisher(file: str | None = None, mappings: Mapping[str, st
     parameters in ``ros``; a parameter of the wrong type prints rclcpp's text and gives 2.
     Returns the exit code.
     """
-    from robotmodel.bus import Node
+    from robotmodel.bus import Node, node_clock
     from robotmodel.publishers._jsp import JointStatePublisher
     from robotmodel.publishers._ros1params import private_params, ros1_jsp_settings
     from robotmodel.rcl import RosArgs, logger_name, node_params, ros1_wire, ros_console
@@ -138,7 +139,8 @@ def run_joint_state_publisher(file: str | None = None, mappings: Mapping[str, st
             desc = description_parameter(node, log)
             if desc is None and node.context.backend.name == "ros1":
                 return 1
-        with JointStatePublisher(desc, bus=node, logger=log, **settings):
+        # stamped in ROS time (/clock with /use_sim_time on ROS 1), as rospy.Time.now() stamps them
+        with JointStatePublisher(desc, bus=node, logger=log, clock=node_clock(node), **settings):
             stop.wait()
     return 0
 
@@ -210,7 +212,7 @@ def _run_ros1_rsp(file: str | None, mappings: Mapping[str, str], package_paths: 
                   untrusted: bool, publish_frequency: float | None, frame_prefix: str, ignore_timestamp: bool,
                   connect: Sequence[str], namespace: str, name: str, ros: RosArgs, log: Any) -> int:
     """ROS 1's robot_state_publisher: ``~publish_frequency`` (50), ``~tf_prefix`` (searched), robot from the server."""
-    from robotmodel.bus import Node
+    from robotmodel.bus import Node, TopicClock, node_clock
     from robotmodel.publishers._ros1params import private_params, tf_prefix_text
     from robotmodel.publishers._rsp import RobotStatePublisher
     from robotmodel.publishers._rsp_state import check_publish_frequency
@@ -241,6 +243,10 @@ def _run_ros1_rsp(file: str | None, mappings: Mapping[str, str], package_paths: 
         if desc is None:
             log.critical("Failed to extract kdl tree from xml robot description")
             return 1
-        with RobotStatePublisher(desc, bus=node, logger=log, **settings):
+        clock = node_clock(node)
+        # On sim time RSP's one-shot timer publishes /tf_static once time runs: stamped in it, never 0.
+        if isinstance(clock, TopicClock) and not clock.wait_for_valid(stop):
+            return 0
+        with RobotStatePublisher(desc, bus=node, logger=log, clock=clock, **settings):
             stop.wait()
     return 0
