@@ -83,13 +83,18 @@ def description_parameter(node: Any, log: Any) -> str | None:
     """ROS 1's nodes take the robot from the parameter server: ``robot_description`` searched up the namespace.
 
     As roscpp's ``searchParam`` (urdf's ``initParam``) finds it, from ``node``'s namespace up to
-    ``/``; None on the other wires (ROS 2 has no parameter server) or when it is not set,
-    logged with ROS 1's text.
+    ``/`` (a remap of ``robot_description`` names the parameter instead); None on the other
+    wires (ROS 2 has no parameter server) or when it is not set, logged with ROS 1's text.
     """
     if node.context.backend.name != "ros1":
         return None
     store = node.parameters
-    found = store.search("robot_description")
+    # ROS 1 remaps parameter names too (robot_description:=my_description), then searches the result
+    remapped = node.resolve_topic_name("robot_description")
+    if remapped != node.resolve_topic_name("robot_description", only_expand=True):
+        found = remapped if store.has(remapped) else None
+    else:
+        found = store.search("robot_description")
     value = store.get(found) if found is not None else None
     if not isinstance(value, str) or not value:
         log.error("Could not find parameter robot_description on parameter server")
