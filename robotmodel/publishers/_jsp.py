@@ -30,7 +30,8 @@ class JointStatePublisher:
     values merged from the ``source_list`` topics (latest value per joint wins). The robot
     is ``description`` (a :class:`RobotDescription`, URDF text or a file) or, without one, the
     next message on ``robot_description``; as joint_state_publisher does, it always
-    listens there and takes each new description (values reset to their defaults).
+    listens there and takes each new description (values reset to their defaults), except
+    on the ROS 1 wire, where ROS 1's reads the parameter only.
 
     :meth:`set` changes free joints' values (a viewer's sliders call it). ``bus`` is a
     :class:`robotmodel.bus.Node` left open on :meth:`close`; without one, a node named
@@ -94,7 +95,10 @@ class JointStatePublisher:
         from robotmodel.bus import QOS_LATCHED
 
         node = self.node
-        self._subs.append(node.create_subscription(String, "robot_description", self._on_description, QOS_LATCHED))
+        # ROS 1's joint_state_publisher reads the robot_description parameter only, never a topic.
+        if node.context.backend.name != "ros1":
+            self._subs.append(node.create_subscription(String, "robot_description", self._on_description,
+                                                       QOS_LATCHED))
         for topic in source_list:
             self._subs.append(node.create_subscription(JointState, topic, self._on_source, 10))
         self._pub = node.create_publisher(JointState, "joint_states", 10)
