@@ -53,6 +53,7 @@ class JointStatePublisher:
         publish_default_velocities: bool = False,
         publish_default_efforts: bool = False,
         delta: float = 0.0,
+        dependent_joints: Mapping[str, tuple[str, float, float]] | None = None,
         clock: Clock | None = None,
         logger: logging.Logger | None = None,
         **node_options: Any,
@@ -64,7 +65,8 @@ class JointStatePublisher:
             zeros=zeros, use_mimic_tags=use_mimic_tags, use_smallest_joint_limits=use_smallest_joint_limits,
             publish_default_positions=publish_default_positions,
             publish_default_velocities=publish_default_velocities,
-            publish_default_efforts=publish_default_efforts, delta=delta, logger=self.log)
+            publish_default_efforts=publish_default_efforts, delta=delta, dependent_joints=dependent_joints,
+            logger=self.log)
         self.clock: Clock = clock or SystemClock()
         self.rate = rate
         self._lock = threading.Lock()

@@ -135,7 +135,7 @@ def run_joint_state_publisher(file: str | None = None, mappings: Mapping[str, st
     with Node(name, namespace, connect=list(connect), remappings=ros.remaps) as node:
         if on_ros1:  # ROS 1's JSP reads its settings from the parameter server
             try:
-                settings = ros1_jsp_settings(private_params(node, ros, namespace, name), log.warning, rate=rate,
+                settings = ros1_jsp_settings(private_params(node, ros, namespace, name), rate=rate,
                                              zeros=dict(zeros or {}), source_list=source_list)
             except RosArgsError as exc:
                 print(f"robotmodel joint-state-publisher: error: {exc}", file=sys.stderr)

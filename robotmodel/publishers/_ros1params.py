@@ -9,7 +9,7 @@ setting as ``~name`` and, when that is unset, ``name`` in the node's namespace
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
 from robotmodel.errors import RosArgsError
@@ -46,15 +46,15 @@ def _number(value: Any) -> bool:
     return isinstance(value, (int, float)) and not isinstance(value, bool)
 
 
-def ros1_jsp_settings(store: ParameterStore, warn: Callable[[str], None], *, rate: float = 10.0,
+def ros1_jsp_settings(store: ParameterStore, *, rate: float = 10.0,
                       zeros: Mapping[str, float] | None = None, source_list: Sequence[str] = ()) -> dict[str, Any]:
     """JointStatePublisher's keyword settings as ROS 1's joint_state_publisher reads them from the server.
 
     Each of ``rate``, ``delta``, ``source_list``, ``zeros/JOINT`` and the five booleans is
     ``~name`` else ``name`` (the namespace's), else the given default (the command's flags).
     A ``zeros`` value of 0 counts as unset, as ``if not zeroval`` has it. A value of the wrong
-    type raises :class:`RosArgsError` naming the parameter. ``dependent_joints`` is not read
-    here (``warn`` says so): the URDF's mimic tags give the dependent joints.
+    type raises :class:`RosArgsError` naming the parameter. ``dependent_joints`` (joint ->
+    {parent, factor, offset}) makes joints follow others, a joint's own mimic tag first.
     """
 
     def get(name: str) -> Any:
@@ -98,6 +98,23 @@ def ros1_jsp_settings(store: ParameterStore, warn: Callable[[str], None], *, rat
                 raise wrong(f"{key}/{joint}", value, "a number")
             settings["zeros"][joint] = float(value)
     settings["zeros"] = {joint: value for joint, value in settings["zeros"].items() if value}
-    if get("dependent_joints") is not None:
-        warn("parameter dependent_joints is not read here: the URDF's mimic tags give the dependent joints")
+    dependent = get("dependent_joints")
+    if dependent is not None:
+        settings["dependent_joints"] = _dependent_joints(dependent)
     return settings
+
+
+def _dependent_joints(tree: Any) -> dict[str, tuple[str, float, float]]:
+    """``dependent_joints``: joint -> {parent, factor (1), offset (0)}, as joint_state_publisher reads it."""
+    if not isinstance(tree, dict):
+        raise RosArgsError(f"parameter dependent_joints: {tree!r} is not a map of joint names to "
+                           "{parent, factor, offset}")
+    found: dict[str, tuple[str, float, float]] = {}
+    for joint, rule in tree.items():
+        if not (isinstance(rule, dict) and isinstance(rule.get("parent"), str)):
+            raise RosArgsError(f"parameter dependent_joints/{joint}: {rule!r} is not {{parent, factor, offset}}")
+        factor, offset = rule.get("factor", 1.0), rule.get("offset", 0.0)
+        if not (_number(factor) and _number(offset)):
+            raise RosArgsError(f"parameter dependent_joints/{joint}: factor and offset must be numbers: {rule!r}")
+        found[str(joint)] = (rule["parent"], float(factor), float(offset))
+    return found

@@ -3,7 +3,7 @@
 Debian's joint_state_publisher (1.15.1) and ours run side by side, each in its own namespace
 with the same parameters: private ones (``_rate:=`` on the command line, ``~zeros``), the
 namespace's where the private one is unset (``zeros/JOINT``, ``publish_default_velocities``,
-``source_list``). A rospy reader compares their messages field by field, and their rates.
+``source_list``, ``dependent_joints``). A rospy reader compares their messages field by field, and their rates.
 """
 
 from __future__ import annotations
@@ -40,6 +40,8 @@ def test_jsp_settings_from_the_server_as_the_real_jsp(ros1: Ros1World) -> None:
         params.set_param(f"{ns}/zeros", {"arm_shoulder_joint": -0.7, "arm_elbow_joint": 5.0})
         params.set_param(f"{ns}/publish_default_velocities", True)
         params.set_param(f"{ns}/source_list", ["/extra_states"])
+        params.set_param(f"{ns}/dependent_joints", {"arm_wrist_yaw_joint": {"parent": "arm_elbow_joint", "factor": 2.0,
+                                                                            "offset": 0.1}})
     echo = ros1.start(SYSTEM_PYTHON, str(HERE / "rospy_joint_echo.py"), "/real/joint_states", "/ours/joint_states")
     echo.wait_line("^ready", 60)
     ros1.start(SYSTEM_PYTHON, str(HERE / "rospy_joint_states.py"), "/extra_states", "arm_base_joint=0.3")
@@ -58,5 +60,6 @@ def test_jsp_settings_from_the_server_as_the_real_jsp(ros1: Ros1World) -> None:
     value = dict(zip(names, positions, strict=True))  # type: ignore[call-overload]
     # private over the namespace's, a zero as unset (the middle of the limits when 0 is outside)
     assert value["arm_elbow_joint"] == 1.1 and value["arm_shoulder_joint"] == -0.7 and velocities
+    assert value["arm_wrist_yaw_joint"] == 1.1 * 2.0 + 0.1  # dependent_joints: follows the elbow
     rates = [statistics.median(b[0] - a[0] for a, b in itertools.pairwise(ms)) / 1e9 for ms in (real, ours)]
     assert abs(rates[1] - 1 / 40) < 0.01 and abs(rates[0] - 1 / 40) < 0.01, rates
