@@ -115,7 +115,7 @@ def run_joint_state_publisher(file: str | None = None, mappings: Mapping[str, st
     """
     from robotmodel.bus import Node, node_clock
     from robotmodel.publishers._jsp import JointStatePublisher
-    from robotmodel.publishers._ros1params import private_params, ros1_jsp_settings
+    from robotmodel.publishers._ros1params import jsp_description, private_params, ros1_jsp_settings
     from robotmodel.rcl import RosArgs, logger_name, node_params, ros1_wire, ros_console
     from robotmodel.signals import stop_on_signals
 
@@ -140,9 +140,9 @@ def run_joint_state_publisher(file: str | None = None, mappings: Mapping[str, st
             except RosArgsError as exc:
                 print(f"robotmodel joint-state-publisher: error: {exc}", file=sys.stderr)
                 return 2
-        if desc is None:
-            desc = description_parameter(node, log)
-            if desc is None and node.context.backend.name == "ros1":
+        if desc is None and on_ros1:
+            desc = jsp_description(node, log)
+            if desc is None:
                 return 1
         # stamped in ROS time (/clock with /use_sim_time on ROS 1), as rospy.Time.now() stamps them
         with JointStatePublisher(desc, bus=node, logger=log, clock=node_clock(node), **settings):

@@ -3,7 +3,8 @@
 The command line's ``_param:=value`` words are set as the node's private ``~param`` first
 (:func:`private_params`, as rospy and roscpp do). joint_state_publisher (1.15.1) reads each
 setting as ``~name`` and, when that is unset, ``name`` in the node's namespace
-(:func:`ros1_jsp_settings`); robot_state_publisher (1.15.2) prefixes frames with
+(:func:`ros1_jsp_settings`), the robot too (:func:`jsp_description`: not searched up the
+namespaces, unlike robot_state_publisher's); robot_state_publisher (1.15.2) prefixes frames with
 ``~tf_prefix`` searched up from the node (:func:`tf_prefix_text`).
 """
 
@@ -18,7 +19,7 @@ if TYPE_CHECKING:
     from robotmodel.bus import ParameterStore
     from robotmodel.rcl import RosArgs
 
-__all__ = ["private_params", "ros1_jsp_settings", "tf_prefix_text"]
+__all__ = ["jsp_description", "private_params", "ros1_jsp_settings", "tf_prefix_text"]
 
 _BOOLS = ("use_mimic_tags", "use_smallest_joint_limits", "publish_default_positions", "publish_default_velocities",
           "publish_default_efforts")
@@ -32,6 +33,22 @@ def private_params(node: Any, ros: RosArgs, namespace: str, name: str) -> Parame
     for param, value in node_params(ros, namespace, name).items():
         store.set("~" + param, value)
     return store
+
+
+def jsp_description(node: Any, log: Any) -> str | None:
+    """ROS 1's joint_state_publisher's robot: ``~robot_description``, else the namespace's ``robot_description``.
+
+    As its ``get_param`` reads it (a remap of ``robot_description`` renames the second); None,
+    logged with its text, when neither is set.
+    """
+    store = node.parameters
+    for key in ("~robot_description", node.resolve_topic_name("robot_description")):
+        if store.has(key):
+            value = store.get(key)
+            if isinstance(value, str) and value:
+                return value
+    log.error("The robot_description parameter is required and not set.")
+    return None
 
 
 def tf_prefix_text(prefix: str) -> str:
