@@ -5,7 +5,9 @@ serves the slave API and TCPROS on the address ROS 1 would pick (see :mod:`._add
 registers each topic it publishes or subscribes to with the master, follows publisherUpdate,
 honours ``shutdown`` (``rosnode kill``), and on :meth:`Ros1Node.close` unregisters everything so
 the master keeps no stale registration. Like every rospy node it publishes ``/rosout``, which
-is also what makes ``rosnode list`` show it.
+is also what makes ``rosnode list`` show it. Unlike rospy's, it registers everything again with
+a master that restarted (:mod:`._keepalive`). The slave API's handlers are in :mod:`._api`,
+the handles it gives out in :mod:`._handles`, name resolution in :mod:`._names`.
 """
 
 from __future__ import annotations
