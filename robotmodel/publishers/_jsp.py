@@ -36,7 +36,8 @@ class JointStatePublisher:
     :meth:`set` changes free joints' values (a viewer's sliders call it). ``bus`` is a
     :class:`robotmodel.bus.Node` left open on :meth:`close`; without one, a node named
     ``joint_state_publisher`` is opened with ``node_options`` and closed again.
-    ``rate=0`` starts no timer: call :meth:`publish` by hand.
+    ``rate=0`` starts no timer: call :meth:`publish` by hand. A ``clock`` other than the
+    system's stamps the messages and paces the timer (``/clock`` on ROS 1's sim time, as rospy.Rate).
     """
 
     def __init__(
@@ -159,6 +160,9 @@ class JointStatePublisher:
         return msg
 
     def _run(self) -> None:
+        if not isinstance(self.clock, SystemClock):
+            self._run_on_clock()
+            return
         period = 1.0 / self.rate
         deadline = time.monotonic() + period
         while not self._stop.wait(max(0.0, deadline - time.monotonic())):
@@ -171,6 +175,25 @@ class JointStatePublisher:
             now = time.monotonic()
             if deadline < now:  # fell behind (a stalled machine): skip, do not burst
                 deadline = now + period
+
+    def _run_on_clock(self) -> None:
+        # Another clock (/clock on sim time) paces the timer too, as rospy.Rate does there.
+        from robotmodel.time import Duration
+
+        period, step = Duration(seconds=1.0 / self.rate), Duration(seconds=0.1)
+        due = self.clock.now() + period
+        while not self._stop.is_set():
+            if not self.clock.sleep_until(due, step):
+                continue
+            try:
+                self.publish()
+            except RobotModelError:
+                self.log.exception("publishing joint states failed")
+            now = self.clock.now()
+            due = due + period
+            # the clock jumped ahead, or back (a looping bag): start again from now
+            if due < now or due - now > period + period:
+                due = now + period
 
     # -- life cycle -------------------------------------------------------------------------------
     def close(self) -> None:
