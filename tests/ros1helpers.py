@@ -236,6 +236,11 @@ class Ros1World:
                                    for pid in self.started_here()), 60, "the master's processes to end")
         self.roscore.kill()
 
+    def restart_master(self) -> None:
+        """A new roscore on the same port, after :meth:`kill_master` (its registrations and parameters are gone)."""
+        self.roscore = self.start("roscore", "-p", str(self.port))
+        wait_until(self._master_up, 60, f"the restarted roscore on {self.uri}")
+
     def reap(self) -> None:
         """Close our nodes, kill every process group and anything else left on this master, then reap."""
         for node in self.nodes:

@@ -74,6 +74,7 @@ from robotmodel.bus._qos import (
     incompatible_policy,
 )
 from robotmodel.bus._remap import RemapKind, RemapRule, parse_rules, remap_topic
+from robotmodel.bus._ros1clock import TopicClock, node_clock
 from robotmodel.bus._ros1codec import ros1_codec
 from robotmodel.bus._router import run_router
 from robotmodel.bus._select import default_wire
@@ -119,6 +120,7 @@ __all__ = [
     "Subscription",
     "TFRecords",
     "Token",
+    "TopicClock",
     "codec_for",
     "dds_type_name",
     "default_domain_id",
@@ -126,6 +128,7 @@ __all__ = [
     "gid_of",
     "incompatible_policy",
     "mangle",
+    "node_clock",
     "open_backend",
     "parse_rules",
     "qos_from_keyexpr",

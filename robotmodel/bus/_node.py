@@ -30,6 +30,7 @@ from robotmodel.bus._graph import Graph
 from robotmodel.bus._names import resolve_topic, validate_namespace, validate_node_name
 from robotmodel.bus._qos import QOS_DEFAULT, QoS
 from robotmodel.bus._remap import RemapRule, node_name_of, node_namespace_of, parse_rules, remap_topic
+from robotmodel.bus._ros1remaps import RemapWatch
 from robotmodel.bus._select import default_wire
 from robotmodel.bus._warn import Warner
 from robotmodel.errors import BusError, MessageError
@@ -296,6 +297,10 @@ class Node:
                 self.context.close()
             raise
         self._closed = False
+        # On ROS 1 every NAME:=VALUE word is a remap: name those that match nothing (robotmodel.bus._ros1remaps).
+        self._remap_watch: RemapWatch | None = None
+        if self.remappings and self.context.backend.name == "ros1":
+            self._remap_watch = RemapWatch(self.remappings, self.name, self.namespace)
 
     @property
     def fully_qualified_name(self) -> str:
@@ -318,7 +323,11 @@ class Node:
     def resolve_topic_name(self, topic: str, *, only_expand: bool = False) -> str:
         """The fully qualified topic name, expanded as rcl does, then remapped (unless ``only_expand``)."""
         full = resolve_topic(topic, self.namespace, self.name)
-        return full if only_expand else remap_topic(self.remappings, full, self.name, self.namespace)
+        if only_expand:
+            return full
+        if self._remap_watch is not None:
+            self._remap_watch.saw(full)
+        return remap_topic(self.remappings, full, self.name, self.namespace)
 
     def create_publisher(self, msg_type: type[M] | str, topic: str, qos: QoSLike = QOS_DEFAULT, *,
                          on_incompatible_qos: QoSEventHandler | None = None) -> Publisher[M]:
@@ -374,6 +383,8 @@ class Node:
         for child in reversed(self._children):
             child.close()
         self._children.clear()
+        if self._remap_watch is not None:
+            self._remap_watch.close()
         if not self._closed:
             self._closed = True
             self.handle.close()

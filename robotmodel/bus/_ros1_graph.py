@@ -10,6 +10,7 @@ changes its own registrations).
 from __future__ import annotations
 
 import hashlib
+import logging
 import threading
 
 from robotmodel.bus._backend import Entity, EntityKind, GraphCallback, Handle
@@ -17,6 +18,8 @@ from robotmodel.bus._warn import Warner
 from robotmodel.errors import MasterError
 
 __all__ = ["GRAPH_PERIOD_S", "GraphPoller", "GraphWatch", "ros1_gid", "ros2_type_name"]
+
+_log = logging.getLogger("robotmodel.bus")
 
 #: Seconds between two polls of the master's graph.
 GRAPH_PERIOD_S = 0.5
@@ -93,7 +96,11 @@ class GraphPoller:
         try:
             now = self._snapshot()
         except (MasterError, ValueError, TypeError) as exc:
-            self._warner.warn("master", f"cannot read the ROS 1 graph: {exc}")
+            if isinstance(exc, MasterError) and exc.code is None:
+                # a master that went away: each node's keepalive says so once (robotmodel.ros1._keepalive)
+                _log.debug("cannot read the ROS 1 graph: %s", exc)
+            else:
+                self._warner.warn("master", f"cannot read the ROS 1 graph: {exc}")
             return
         with self._lock:
             old, self._entities = self._entities, now

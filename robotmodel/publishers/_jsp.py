@@ -30,12 +30,14 @@ class JointStatePublisher:
     values merged from the ``source_list`` topics (latest value per joint wins). The robot
     is ``description`` (a :class:`RobotDescription`, URDF text or a file) or, without one, the
     next message on ``robot_description``; as joint_state_publisher does, it always
-    listens there and takes each new description (values reset to their defaults).
+    listens there and takes each new description (values reset to their defaults), except
+    on the ROS 1 wire, where ROS 1's reads the parameter only.
 
     :meth:`set` changes free joints' values (a viewer's sliders call it). ``bus`` is a
     :class:`robotmodel.bus.Node` left open on :meth:`close`; without one, a node named
     ``joint_state_publisher`` is opened with ``node_options`` and closed again.
-    ``rate=0`` starts no timer: call :meth:`publish` by hand.
+    ``rate=0`` starts no timer: call :meth:`publish` by hand. A ``clock`` other than the
+    system's stamps the messages and paces the timer (``/clock`` on ROS 1's sim time, as rospy.Rate).
     """
 
     def __init__(
@@ -52,6 +54,7 @@ class JointStatePublisher:
         publish_default_velocities: bool = False,
         publish_default_efforts: bool = False,
         delta: float = 0.0,
+        dependent_joints: Mapping[str, tuple[str, float, float]] | None = None,
         clock: Clock | None = None,
         logger: logging.Logger | None = None,
         **node_options: Any,
@@ -63,7 +66,8 @@ class JointStatePublisher:
             zeros=zeros, use_mimic_tags=use_mimic_tags, use_smallest_joint_limits=use_smallest_joint_limits,
             publish_default_positions=publish_default_positions,
             publish_default_velocities=publish_default_velocities,
-            publish_default_efforts=publish_default_efforts, delta=delta, logger=self.log)
+            publish_default_efforts=publish_default_efforts, delta=delta, dependent_joints=dependent_joints,
+            logger=self.log)
         self.clock: Clock = clock or SystemClock()
         self.rate = rate
         self._lock = threading.Lock()
@@ -94,7 +98,10 @@ class JointStatePublisher:
         from robotmodel.bus import QOS_LATCHED
 
         node = self.node
-        self._subs.append(node.create_subscription(String, "robot_description", self._on_description, QOS_LATCHED))
+        # ROS 1's joint_state_publisher reads the robot_description parameter only, never a topic.
+        if node.context.backend.name != "ros1":
+            self._subs.append(node.create_subscription(String, "robot_description", self._on_description,
+                                                       QOS_LATCHED))
         for topic in source_list:
             self._subs.append(node.create_subscription(JointState, topic, self._on_source, 10))
         self._pub = node.create_publisher(JointState, "joint_states", 10)
@@ -153,6 +160,9 @@ class JointStatePublisher:
         return msg
 
     def _run(self) -> None:
+        if not isinstance(self.clock, SystemClock):
+            self._run_on_clock()
+            return
         period = 1.0 / self.rate
         deadline = time.monotonic() + period
         while not self._stop.wait(max(0.0, deadline - time.monotonic())):
@@ -165,6 +175,25 @@ class JointStatePublisher:
             now = time.monotonic()
             if deadline < now:  # fell behind (a stalled machine): skip, do not burst
                 deadline = now + period
+
+    def _run_on_clock(self) -> None:
+        # Another clock (/clock on sim time) paces the timer too, as rospy.Rate does there.
+        from robotmodel.time import Duration
+
+        period, step = Duration(seconds=1.0 / self.rate), Duration(seconds=0.1)
+        due = self.clock.now() + period
+        while not self._stop.is_set():
+            if not self.clock.sleep_until(due, step):
+                continue
+            try:
+                self.publish()
+            except RobotModelError:
+                self.log.exception("publishing joint states failed")
+            now = self.clock.now()
+            due = due + period
+            # the clock jumped ahead, or back (a looping bag): start again from now
+            if due < now or due - now > period + period:
+                due = now + period
 
     # -- life cycle -------------------------------------------------------------------------------
     def close(self) -> None:

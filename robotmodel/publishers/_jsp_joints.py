@@ -135,8 +135,12 @@ def read_layout(
     *,
     use_mimic_tags: bool = True,
     use_smallest_joint_limits: bool = True,
+    dependent_joints: Mapping[str, tuple[str, float, float]] | None = None,
 ) -> JointLayout:
     """joint_state_publisher's joints of the URDF text ``urdf``.
+
+    ``dependent_joints`` (ROS 1's parameter: joint -> (parent, factor, offset)) makes those
+    joints follow another one as a mimic tag would; a joint's own mimic tag comes first.
 
     Raises :class:`URDFError` with joint_state_publisher's text for a revolute or
     prismatic joint without usable limits, and for a mimic cycle.
@@ -164,6 +168,9 @@ def read_layout(
             tag = mimics[0].attrib
             direct[name] = (tag.get("joint", ""), _mimic_float(name, tag, "multiplier", 1.0),
                             _mimic_float(name, tag, "offset", 0.0))
+            continue
+        if dependent_joints and name in dependent_joints:
+            direct[name] = dependent_joints[name]
             continue
         free[name] = FreeJoint(name, lower, upper, _default(name, lower, upper, zeros), jtype == "continuous")
     dependent, unresolved = _resolve(direct, free)

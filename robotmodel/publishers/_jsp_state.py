@@ -38,9 +38,11 @@ class JointStateLogic:
         publish_default_velocities: bool = False,
         publish_default_efforts: bool = False,
         delta: float = 0.0,
+        dependent_joints: Mapping[str, tuple[str, float, float]] | None = None,
         logger: logging.Logger | None = None,
     ) -> None:
         self.zeros = dict(zeros or {})
+        self.dependent_joints = dict(dependent_joints or {})
         self.use_mimic_tags = use_mimic_tags
         self.use_smallest_joint_limits = use_smallest_joint_limits
         self.publish_default_positions = publish_default_positions
@@ -72,7 +74,8 @@ class JointStateLogic:
         leaves the previous robot in place when the description is unusable.
         """
         layout = read_layout(urdf, self.zeros, use_mimic_tags=self.use_mimic_tags,
-                             use_smallest_joint_limits=self.use_smallest_joint_limits)
+                             use_smallest_joint_limits=self.use_smallest_joint_limits,
+                             dependent_joints=self.dependent_joints)
         for name in layout.unresolved:
             self.log.warning("mimic joint '%s' of robot '%s' does not lead to a movable, non-mimic joint; "
                              "it is not published", name, layout.robot)

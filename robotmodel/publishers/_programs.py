@@ -28,11 +28,12 @@ _BOOLS = ("publish_default_positions", "publish_default_velocities", "publish_de
 _WHY = {
     "dependent_joints": "joint_state_publisher replaces it with the URDF's mimic tags once a robot is loaded",
     "robot_description": "joint_state_publisher reads the robot from FILE or the robot_description topic",
-    "use_sim_time": "there is no /clock here",
+    "use_sim_time": "on ROS 2 wires time is the system's (on ROS 1, /use_sim_time is followed)",
     "qos_overrides": "QoS overrides are not read here",
 }
 _RSP_PARAMS = frozenset({"robot_description", "publish_frequency", "ignore_timestamp", "frame_prefix"})
-_RSP_WHY = {"use_sim_time": "there is no /clock here", "qos_overrides": "QoS overrides are not read here"}
+_RSP_WHY = {"use_sim_time": "on ROS 2 wires time is the system's (on ROS 1, /use_sim_time is followed)",
+            "qos_overrides": "QoS overrides are not read here"}
 
 
 def jsp_settings(values: Mapping[str, Any], warn: Callable[[str], None], *, rate: float = 10.0,
@@ -82,13 +83,18 @@ def description_parameter(node: Any, log: Any) -> str | None:
     """ROS 1's nodes take the robot from the parameter server: ``robot_description`` searched up the namespace.
 
     As roscpp's ``searchParam`` (urdf's ``initParam``) finds it, from ``node``'s namespace up to
-    ``/``; None on the other wires (ROS 2 has no parameter server) or when it is not set,
-    logged with ROS 1's text.
+    ``/`` (a remap of ``robot_description`` names the parameter instead); None on the other
+    wires (ROS 2 has no parameter server) or when it is not set, logged with ROS 1's text.
     """
     if node.context.backend.name != "ros1":
         return None
     store = node.parameters
-    found = store.search("robot_description")
+    # ROS 1 remaps parameter names too (robot_description:=my_description), then searches the result
+    remapped = node.resolve_topic_name("robot_description")
+    if remapped != node.resolve_topic_name("robot_description", only_expand=True):
+        found = remapped if store.has(remapped) else None
+    else:
+        found = store.search("robot_description")
     value = store.get(found) if found is not None else None
     if not isinstance(value, str) or not value:
         log.error("Could not find parameter robot_description on parameter server")
@@ -107,17 +113,19 @@ def run_joint_state_publisher(file: str | None = None, mappings: Mapping[str, st
     parameters in ``ros``; a parameter of the wrong type prints rclcpp's text and gives 2.
     Returns the exit code.
     """
-    from robotmodel.bus import Node
+    from robotmodel.bus import Node, node_clock
     from robotmodel.publishers._jsp import JointStatePublisher
-    from robotmodel.rcl import RosArgs, logger_name, node_params, ros_console
+    from robotmodel.publishers._ros1params import jsp_description, private_params, ros1_jsp_settings
+    from robotmodel.rcl import RosArgs, logger_name, node_params, ros1_wire, ros_console
     from robotmodel.signals import stop_on_signals
 
     ros = ros or RosArgs()
     name = ros.node_name or _JSP
     log = ros_console(logger_name(namespace, name))
+    on_ros1 = ros1_wire()
     try:
-        settings = jsp_settings(node_params(ros, namespace, name), log.warning, rate=rate, zeros=dict(zeros or {}),
-                                source_list=source_list)
+        settings = {} if on_ros1 else jsp_settings(node_params(ros, namespace, name), log.warning, rate=rate,
+                                                   zeros=dict(zeros or {}), source_list=source_list)
     except RosArgsError as exc:
         print(f"robotmodel joint-state-publisher: error: {exc}", file=sys.stderr)
         return 2
@@ -125,11 +133,19 @@ def run_joint_state_publisher(file: str | None = None, mappings: Mapping[str, st
     stop = stop_on_signals()
     # joint_states, robot_description and relative --source-list topics resolve under the namespace.
     with Node(name, namespace, connect=list(connect), remappings=ros.remaps) as node:
-        if desc is None:
-            desc = description_parameter(node, log)
-            if desc is None and node.context.backend.name == "ros1":
+        if on_ros1:  # ROS 1's JSP reads its settings from the parameter server
+            try:
+                settings = ros1_jsp_settings(private_params(node, ros, namespace, name), rate=rate,
+                                             zeros=dict(zeros or {}), source_list=source_list)
+            except RosArgsError as exc:
+                print(f"robotmodel joint-state-publisher: error: {exc}", file=sys.stderr)
+                return 2
+        if desc is None and on_ros1:
+            desc = jsp_description(node, log)
+            if desc is None:
                 return 1
-        with JointStatePublisher(desc, bus=node, logger=log, **settings):
+        # stamped in ROS time (/clock with /use_sim_time on ROS 1), as rospy.Time.now() stamps them
+        with JointStatePublisher(desc, bus=node, logger=log, clock=node_clock(node), **settings):
             stop.wait()
     return 0
 
@@ -197,21 +213,12 @@ def run_robot_state_publisher(file: str | None = None, mappings: Mapping[str, st
     return 0
 
 
-def _private_params(node: Any, ros: RosArgs, namespace: str, name: str) -> Any:
-    """ROS 1: the command line's ``_param:=`` values set as ``~param`` on the server (as rospy and roscpp do)."""
-    from robotmodel.rcl import node_params
-
-    store = node.parameters
-    for param, value in node_params(ros, namespace, name).items():
-        store.set("~" + param, value)
-    return store
-
-
 def _run_ros1_rsp(file: str | None, mappings: Mapping[str, str], package_paths: Sequence[str | os.PathLike[str]],
                   untrusted: bool, publish_frequency: float | None, frame_prefix: str, ignore_timestamp: bool,
                   connect: Sequence[str], namespace: str, name: str, ros: RosArgs, log: Any) -> int:
     """ROS 1's robot_state_publisher: ``~publish_frequency`` (50), ``~tf_prefix`` (searched), robot from the server."""
-    from robotmodel.bus import Node
+    from robotmodel.bus import Node, TopicClock, node_clock
+    from robotmodel.publishers._ros1params import private_params, tf_prefix_text
     from robotmodel.publishers._rsp import RobotStatePublisher
     from robotmodel.publishers._rsp_state import check_publish_frequency
     from robotmodel.signals import stop_on_signals
@@ -219,7 +226,7 @@ def _run_ros1_rsp(file: str | None, mappings: Mapping[str, str], package_paths: 
     desc: Any = _load(file, mappings, package_paths, untrusted)
     stop = stop_on_signals()
     with Node(name, namespace, connect=list(connect), remappings=ros.remaps) as node:
-        store = _private_params(node, ros, namespace, name)
+        store = private_params(node, ros, namespace, name)
 
         def param(key: str, kinds: tuple[type, ...], default: Any) -> Any:
             value = store.get(key) if store.has(key) else default
@@ -229,18 +236,22 @@ def _run_ros1_rsp(file: str | None, mappings: Mapping[str, str], package_paths: 
             return value
 
         hz = float(param("~publish_frequency", (float, int), 50.0 if publish_frequency is None else publish_frequency))
-        # tf_prefix is searched up from the private namespace, as RSP's n_tilde.searchParam does.
+        # tf_prefix is searched up from the private namespace (the master starts at the caller id),
+        # as RSP's n_tilde.searchParam does.
         prefix_key = store.search("tf_prefix")
         prefix = str(param(prefix_key, (str,), "")) if prefix_key else ""
-        prefix = prefix.strip("/")
         settings: dict[str, Any] = {"publish_frequency": check_publish_frequency(hz),
                     "ignore_timestamp": bool(param("~ignore_timestamp", (bool,), ignore_timestamp)),
-                    "frame_prefix": f"{prefix}/" if prefix else frame_prefix}
+                    "frame_prefix": tf_prefix_text(prefix) if prefix else frame_prefix}
         if desc is None:
             desc = description_parameter(node, log)
         if desc is None:
             log.critical("Failed to extract kdl tree from xml robot description")
             return 1
-        with RobotStatePublisher(desc, bus=node, logger=log, **settings):
+        clock = node_clock(node)
+        # On sim time RSP's one-shot timer publishes /tf_static once time runs: stamped in it, never 0.
+        if isinstance(clock, TopicClock) and not clock.wait_for_valid(stop):
+            return 0
+        with RobotStatePublisher(desc, bus=node, logger=log, clock=clock, **settings):
             stop.wait()
     return 0

@@ -22,9 +22,10 @@ class RobotStatePublisher:
     """ROS 2's robot_state_publisher as an object: give it a robot and a bus node.
 
     On start it publishes ``robot_description`` (std_msgs/String, transient local depth 1:
-    a late joiner gets it) and the fixed joints on ``/tf_static`` (latched); then each
-    JointState on ``joint_states`` (in the node's namespace, as RSP subscribes) gives the
-    moving joints on ``/tf``. See :class:`RobotStateLogic` for the rules.
+    a late joiner gets it; not on the ROS 1 wire, where ROS 1's RSP has no such topic) and
+    the fixed joints on ``/tf_static`` (latched); then each JointState on ``joint_states``
+    (in the node's namespace, as RSP subscribes) gives the moving joints on ``/tf``. See
+    :class:`RobotStateLogic` for the rules.
 
     ``bus`` is a :class:`robotmodel.bus.Node`, left open on :meth:`close`; without one the
     publisher opens a node named ``robot_state_publisher`` (``node_options`` such as
@@ -70,7 +71,9 @@ class RobotStatePublisher:
         from robotmodel.tf_ros import StaticTransformBroadcaster
 
         node = self.node
-        self._description_pub = node.create_publisher(String, "robot_description", QOS_LATCHED)
+        # ROS 1's RSP reads robot_description from the parameter server and publishes no such topic.
+        self._description_pub = (None if node.context.backend.name == "ros1"
+                                 else node.create_publisher(String, "robot_description", QOS_LATCHED))
         # TransformBroadcaster's topic and QoS; one publisher serves messages and bytes encoded here.
         self._tf_pub = node.create_publisher(TFMessage, "/tf", QOS_TF)
         self._tf_static = StaticTransformBroadcaster(node)
@@ -85,7 +88,8 @@ class RobotStatePublisher:
             self._sub = node.create_subscription(JointState, "joint_states", self._on_raw, sensor, raw=True)
 
     def _publish_setup(self) -> None:
-        self._description_pub.publish(String(data=self.logic.description_text))
+        if self._description_pub is not None:
+            self._description_pub.publish(String(data=self.logic.description_text))
         self._tf_static.send_transform(self.logic.fixed_transforms(self.clock.now().nanoseconds))
         self.logic.log.info("Robot initialized")
 

@@ -13,10 +13,12 @@ from __future__ import annotations
 
 from robotmodel.errors import MasterError, Ros1Error
 from robotmodel.ros1._address import NodeAddress, address_override, node_address
+from robotmodel.ros1._handles import Ros1Publisher, Ros1Subscriber
 from robotmodel.ros1._header import decode_header, encode_header
 from robotmodel.ros1._master import DEFAULT_MASTER_URI, MasterClient, ParamClient, master_uri_from_env, xmlrpc_call
 from robotmodel.ros1._msgs import Ros1Type, deserialize, message_type, serialize, typestore, wire_name
-from robotmodel.ros1._node import Ros1Node, Ros1Publisher, Ros1Subscriber, resolve_name
+from robotmodel.ros1._names import resolve_name
+from robotmodel.ros1._node import Ros1Node
 from robotmodel.ros1._slave import SLAVE_METHODS, SlaveServer
 
 __all__ = [

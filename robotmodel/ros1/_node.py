@@ -5,7 +5,9 @@ serves the slave API and TCPROS on the address ROS 1 would pick (see :mod:`._add
 registers each topic it publishes or subscribes to with the master, follows publisherUpdate,
 honours ``shutdown`` (``rosnode kill``), and on :meth:`Ros1Node.close` unregisters everything so
 the master keeps no stale registration. Like every rospy node it publishes ``/rosout``, which
-is also what makes ``rosnode list`` show it.
+is also what makes ``rosnode list`` show it. Unlike rospy's, it registers everything again with
+a master that restarted (:mod:`._keepalive`). The slave API's handlers are in :mod:`._api`,
+the handles it gives out in :mod:`._handles`, name resolution in :mod:`._names`.
 """
 
 from __future__ import annotations
@@ -18,13 +20,17 @@ from typing import Any
 
 from robotmodel.errors import MasterError, Ros1Error
 from robotmodel.ros1._address import node_address
+from robotmodel.ros1._api import slave_handlers
+from robotmodel.ros1._handles import Ros1Publisher, Ros1Subscriber
+from robotmodel.ros1._keepalive import MasterKeepalive
 from robotmodel.ros1._master import DEFAULT_MASTER_URI, MasterClient, ParamClient
-from robotmodel.ros1._msgs import Ros1Type, deserialize, message_type, serialize
+from robotmodel.ros1._msgs import message_type
+from robotmodel.ros1._names import resolve_name
 from robotmodel.ros1._publisher import Publication, TcprosServer
 from robotmodel.ros1._slave import SlaveServer
 from robotmodel.ros1._subscriber import Subscription
 
-__all__ = ["ParamCallback", "Ros1Node", "Ros1Publisher", "Ros1Subscriber", "resolve_name"]
+__all__ = ["ParamCallback", "Ros1Node"]
 
 _log = logging.getLogger("robotmodel.ros1")
 
@@ -32,99 +38,18 @@ _log = logging.getLogger("robotmodel.ros1")
 ParamCallback = Callable[[str, Any], None]
 
 
-def _join(namespace: str, name: str) -> str:
-    return (namespace.rstrip("/") + "/" + name.strip("/")) if name.strip("/") else (namespace or "/")
-
-
-def resolve_name(name: str, namespace: str, node_name: str) -> str:
-    """ROS 1's resolution of a graph name: ``/x`` stays, ``~x`` is under the node, ``x`` under the namespace."""
-    if not name:
-        raise Ros1Error("empty graph name")
-    if name.startswith("/"):
-        resolved = name
-    elif name.startswith("~"):
-        resolved = _join(node_name, name[1:])
-    else:
-        resolved = _join(namespace if namespace.startswith("/") else "/" + namespace, name)
-    return "/" + "/".join(part for part in resolved.split("/") if part)
-
-
-class Ros1Publisher:
-    """A handle on a topic the node publishes; :meth:`publish` takes a rosbags message of the type."""
-
-    def __init__(self, node: Ros1Node, publication: Publication) -> None:
-        self._node = node
-        self._publication = publication
-        self.topic = publication.topic
-        self.type: Ros1Type = publication.type
-
-    def publish(self, message: Any) -> None:
-        """Serialize ``message`` and send it to every subscriber.
-
-        After :meth:`close` this raises :class:`Ros1Error`; after the node shut down (``rosnode
-        kill`` may come between a loop's check and its publish) it does nothing, as roscpp does.
-        """
-        self.publish_raw(serialize(message, self.type.name))
-
-    def publish_raw(self, data: bytes) -> None:
-        """Send already serialized ROS 1 bytes (see :meth:`publish`)."""
-        try:
-            self._publication.publish(data)
-        except Ros1Error:
-            if not self._node.is_shutdown:
-                raise
-
-    @property
-    def subscriber_count(self) -> int:
-        """TCPROS subscribers connected now."""
-        return self._publication.subscriber_count
-
-    def close(self) -> None:
-        """Stop publishing; the last handle on a topic unregisters it at the master."""
-        self._node._release_publication(self.topic, self)
-
-
-class Ros1Subscriber:
-    """A handle on a subscription; its callback gets each message (or its bytes when ``raw``)."""
-
-    def __init__(self, node: Ros1Node, subscription: Subscription, callback: Callable[..., None],
-                 raw: bool, with_header: bool = False) -> None:
-        self._node = node
-        self.subscription = subscription
-        self.topic = subscription.topic
-        self.type: Ros1Type = subscription.type
-        self.callback = callback
-        self.raw = raw
-        self.with_header = with_header
-
-    def deliver(self, data: bytes, header: Mapping[str, str]) -> None:
-        """Hand ``data`` to the callback, decoded unless raw (with the publisher's header when asked)."""
-        if self.with_header:
-            self.callback(data, header)
-        else:
-            self.callback(data if self.raw else deserialize(data, self.type.name))
-
-    @property
-    def publisher_uris(self) -> list[str]:
-        """Slave URIs of the publishers connected now."""
-        return self.subscription.publisher_uris
-
-    def close(self) -> None:
-        """Stop receiving; the last handle on a topic unregisters it at the master."""
-        self._node._release_subscription(self.topic, self)
-
-
 class Ros1Node:
     """A ROS 1 node named ``name`` (resolved in ``namespace``) on the master ``master_uri``.
 
     ``master_uri`` defaults to ROS_MASTER_URI (else ``http://localhost:11311``), ``namespace``
     to ROS_NAMESPACE (else ``/``). ``args`` may carry ``__hostname:=``/``__ip:=``; ``bind_all``
-    binds every interface instead of the advertised address only.
+    binds every interface instead of the advertised address only. ``keepalive`` registers the
+    node again with a master that restarted (:mod:`._keepalive`); ``rosout`` publishes ``/rosout``.
     """
 
     def __init__(self, name: str, *, master_uri: str | None = None, namespace: str | None = None,
                  args: Sequence[str] = (), env: Mapping[str, str] | None = None, bind_all: bool = False,
-                 rosout: bool = True) -> None:
+                 rosout: bool = True, keepalive: bool = True) -> None:
         env = os.environ if env is None else env
         self.master_uri = master_uri or env.get("ROS_MASTER_URI") or DEFAULT_MASTER_URI
         self.namespace = resolve_name(namespace or env.get("ROS_NAMESPACE") or "/", "/", "/")
@@ -143,16 +68,18 @@ class Ros1Node:
         self.shutdown_reason = ""
         #: Called (with the reason) on a ``shutdown`` request, after the node closed.
         self.on_shutdown: Callable[[str], None] | None = None
-        self._tcpros = TcprosServer(self._publication, host=address.host, bind=address.bind, callerid=self.name,
-                                    topics=self._publication_list)
-        self._slave = SlaveServer(self._handlers(), host=address.host, bind=address.bind)
+        self._tcpros = TcprosServer(self.publication, host=address.host, bind=address.bind, callerid=self.name,
+                                    topics=self.publication_list)
+        self._slave = SlaveServer(slave_handlers(self), host=address.host, bind=address.bind)
         self.uri = self._slave.uri
+        self._keepalive: MasterKeepalive | None = None
         try:
             self.master.get_uri()  # fail here, naming the master, rather than on the first advertise
             self.rosout = self.advertise("/rosout", "rosgraph_msgs/Log") if rosout else None
         except BaseException:
             self._stop_servers()
             raise
+        self._keepalive = MasterKeepalive(self) if keepalive else None
 
     def resolve(self, name: str) -> str:
         """``name`` resolved against this node's namespace and name."""
@@ -282,90 +209,77 @@ class Ros1Node:
                 return
         self._unregister("unsubscribeParam", resolved)
 
-    # -- the slave API ------------------------------------------------------------------------
+    # -- what the slave API and the keepalive read ---------------------------------------------
 
-    def _publication(self, topic: str) -> Publication | None:
+    @property
+    def tcpros_port(self) -> int:
+        """The port of this node's TCPROS server."""
+        return self._tcpros.port
+
+    def publication(self, topic: str) -> Publication | None:
+        """The publication of ``topic`` (None: this node does not publish it)."""
         with self._lock:
             entry = self._publications.get(topic)
             return entry[0] if entry else None
 
-    def _publication_list(self) -> list[list[str]]:
+    def subscription(self, topic: str) -> Subscription | None:
+        """The subscription to ``topic`` (None: this node does not subscribe to it)."""
+        with self._lock:
+            entry = self._subscriptions.get(topic)
+            return entry[0] if entry else None
+
+    def publications(self) -> list[Publication]:
+        """Every topic this node publishes."""
+        with self._lock:
+            return [p for p, _ in self._publications.values()]
+
+    def subscriptions(self) -> list[Subscription]:
+        """Every topic this node subscribes to."""
+        with self._lock:
+            return [s for s, _ in self._subscriptions.values()]
+
+    def publication_list(self) -> list[list[str]]:
+        """``[[topic, type], ...]`` of the publications (getPublications)."""
         with self._lock:
             return [[topic, pub.type.name] for topic, (pub, _) in self._publications.items()]
 
-    def _handlers(self) -> dict[str, Callable[..., list[Any]]]:
-        def request_topic(caller_id: str, topic: str, protocols: list[Any]) -> list[Any]:
-            if self._publication(topic) is None:
-                return [-1, f"Not a publisher of [{topic}]", []]
-            if not isinstance(protocols, list) or not any(isinstance(p, list) and p[:1] == ["TCPROS"]
-                                                          for p in protocols):
-                return [0, "no supported protocol implementations", []]
-            return [1, f"ready on {self.host}:{self._tcpros.port}", ["TCPROS", self.host, self._tcpros.port]]
+    def param_callbacks(self, name: str) -> list[ParamCallback]:
+        """The callbacks of every subscribed parameter that ``name`` is, holds or lies under."""
+        with self._lock:
+            return [cb for k, cbs in self._param_callbacks.items()
+                    if name == k or name.startswith(k.rstrip("/") + "/") or k.startswith(name + "/") for cb in cbs]
 
-        def publisher_update(caller_id: str, topic: str, publishers: list[str]) -> list[Any]:
-            if not isinstance(publishers, list) or not all(isinstance(p, str) for p in publishers):
-                return [-1, "ERROR: param [publishers] must be a list of strings", 0]
-            with self._lock:
-                entry = self._subscriptions.get(topic)
-            if entry is not None:
-                entry[0].update_publishers(publishers)
-            return [1, "", 0]
+    def request_shutdown(self, caller_id: str, msg: str) -> None:
+        """The slave API's ``shutdown``: close (after the call answered), then tell :attr:`on_shutdown`."""
+        _log.warning("%s: shutdown request from [%s]: %s", self.name, caller_id, msg)
+        self.shutdown_reason = f"external shutdown request from [{caller_id}]: {msg}"
+        self.shutdown_requested.set()
 
-        def bus_info(caller_id: str) -> list[Any]:
-            with self._lock:
-                pubs = [p for p, _ in self._publications.values()]
-                subs = [s for s, _ in self._subscriptions.values()]
-            rows = [row for p in pubs for row in p.bus_info()] + [row for s in subs for row in s.bus_info()]
-            return [1, "bus info", rows]
+        def close_then_tell() -> None:
+            self.close()
+            if self.on_shutdown is not None:
+                self.on_shutdown(self.shutdown_reason)
 
-        def bus_stats(caller_id: str) -> list[Any]:
-            with self._lock:
-                pubs = [p for p, _ in self._publications.values()]
-                subs = [s for s, _ in self._subscriptions.values()]
-            return [1, "", [[p.bus_stats() for p in pubs], [s.bus_stats() for s in subs], []]]
+        # close after this call has answered: closing stops the server answering it
+        threading.Thread(target=close_then_tell, name="ros1-shutdown", daemon=True).start()
 
-        def subscriptions(caller_id: str) -> list[Any]:
-            with self._lock:
-                return [1, "subscriptions", [[t, s.type.name] for t, (s, _) in self._subscriptions.items()]]
+    def reregister(self) -> int:
+        """Register every publication, subscription and parameter subscription again; how many topics.
 
-        def shutdown(caller_id: str, msg: str = "") -> list[Any]:
-            _log.warning("%s: shutdown request from [%s]: %s", self.name, caller_id, msg)
-            self.shutdown_reason = f"external shutdown request from [{caller_id}]: {msg}"
-            self.shutdown_requested.set()
-
-            def close_then_tell() -> None:
-                self.close()
-                if self.on_shutdown is not None:
-                    self.on_shutdown(self.shutdown_reason)
-
-            # close after this call has answered: closing stops the server answering it
-            threading.Thread(target=close_then_tell, name="ros1-shutdown", daemon=True).start()
-            return [1, "shutdown", 0]
-
-        def param_update(caller_id: str, key: str, value: Any) -> list[Any]:
-            name = "/" + key.strip("/")
-            with self._lock:
-                targets = [(k, list(cbs)) for k, cbs in self._param_callbacks.items()
-                           if name == k or name.startswith(k.rstrip("/") + "/") or k.startswith(name + "/")]
-            if not targets:
-                return [-1, "not subscribed", 0]
-            for _, callbacks in targets:
-                for callback in callbacks:
-                    callback(name, value)
-            return [1, "", 0]
-
-        return {
-            "requestTopic": request_topic,
-            "publisherUpdate": publisher_update,
-            "getBusInfo": bus_info,
-            "getBusStats": bus_stats,
-            "getPid": lambda caller_id: [1, "", os.getpid()],
-            "getMasterUri": lambda caller_id: [1, self.master_uri, self.master_uri],
-            "getSubscriptions": subscriptions,
-            "getPublications": lambda caller_id: [1, "publications", self._publication_list()],
-            "shutdown": shutdown,
-            "paramUpdate": param_update,
-        }
+        For a master that restarted (:mod:`._keepalive`); subscriptions connect to the
+        publishers it names, keeping the connections they have.
+        """
+        with self._lock:
+            pubs = [(topic, pub.type.name) for topic, (pub, _) in self._publications.items()]
+            subs = [sub for sub, _ in self._subscriptions.values()]
+            params = list(self._param_callbacks)
+        for topic, typename in pubs:
+            self.master.register_publisher(topic, typename, self.uri)
+        for sub in subs:
+            sub.add_publishers(self.master.register_subscriber(sub.topic, sub.type.name, self.uri))
+        for key in params:
+            self.params.subscribe_param(key, self.uri)
+        return len(pubs) + len(subs)
 
     # -- life cycle ---------------------------------------------------------------------------
 
@@ -417,6 +331,8 @@ class Ros1Node:
         self._stop_servers()
 
     def _stop_servers(self) -> None:
+        if self._keepalive is not None:
+            self._keepalive.close()
         self._tcpros.close()
         self._slave.close()
 

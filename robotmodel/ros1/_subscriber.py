@@ -206,6 +206,16 @@ class Subscription:
         for conn in gone:
             conn.close()
 
+    def add_publishers(self, uris: list[str]) -> None:
+        """Connect to the publishers in ``uris`` not connected yet, keeping every other connection.
+
+        For a master that restarted: publishers that have not registered again yet (rospy's
+        never do) keep their connections until a publisherUpdate leaves them out.
+        """
+        with self.lock:
+            known = list(self._inbound)
+        self.update_publishers(known + [uri for uri in uris if uri not in known])
+
     def forget(self, conn: _Inbound) -> None:
         """A connection thread ended: drop it so a later publisherUpdate can start a new one."""
         with self.lock:

@@ -45,6 +45,18 @@ def can_transform_reason(buffer: Any, target: str, source: str) -> str:
     return "" if ok else str(reason)
 
 
+def _pause(stop: Any, clock: Any, period: float) -> None:
+    """One period of ``clock``'s time (a sim clock's pace, as ros::Rate keeps it), ended early by ``stop``."""
+    from robotmodel.time import Duration, SystemClock
+
+    if isinstance(clock, SystemClock):
+        stop.wait(period)
+        return
+    until = clock.now() + Duration(seconds=period)
+    while not stop.is_set() and not clock.sleep_until(until, Duration(seconds=0.1)):
+        pass
+
+
 def run_tf2_echo(words: Sequence[str]) -> int:
     """Run tf2_echo on ``words`` (the words after the program's name); returns the exit code.
 
@@ -81,7 +93,7 @@ def run_tf2_echo(words: Sequence[str]) -> int:
         return int(run_bag_echo(echo, bag_options))
 
     stop = stop_on_signals()
-    from robotmodel.bus import Node
+    from robotmodel.bus import Node, node_clock
     from robotmodel.errors import TransformException
     from robotmodel.tf import Buffer, Time
     from robotmodel.tf_ros._listener import TransformListener
@@ -93,6 +105,7 @@ def run_tf2_echo(words: Sequence[str]) -> int:
     warn_ignored_params(ros, namespace, ros.node_name or _NODE)
     with Node(ros.node_name or _NODE, namespace, connect=endpoints, remappings=ros.remaps) as node, \
             TransformListener(buffer, node):
+        clock = node_clock(node)  # ROS time: /clock with /use_sim_time on ROS 1, as tf_echo's ros::Rate
         last_log = -1.0
         while not stop.is_set():
             reason = can_transform_reason(buffer, source, target)
@@ -102,19 +115,19 @@ def run_tf2_echo(words: Sequence[str]) -> int:
             if last_log < 0 or now - last_log >= 1.0:
                 ros_log("INFO", _NODE, waiting_message(source, target, reason))
                 last_log = now
-            stop.wait(period)
+            _pause(stop, clock, period)
         printed = False
         while not stop.is_set():
             try:
                 t = buffer.lookup_transform(source, target, Time())
             except TransformException as exc:
-                text = failure_text(time.time_ns() / 1e9, str(exc), buffer.all_frames_as_string(), printed)
+                text = failure_text(clock.now().nanoseconds / 1e9, str(exc), buffer.all_frames_as_string(), printed)
             else:
                 tr, rot, stamp = t.transform.translation, t.transform.rotation, t.header.stamp
                 text = format_echo(stamp.sec, stamp.nanosec, (tr.x, tr.y, tr.z), (rot.x, rot.y, rot.z, rot.w))
                 printed = True
             sys.stdout.write(text)
             sys.stdout.flush()
-            stop.wait(period)
+            _pause(stop, clock, period)
     return 0
 

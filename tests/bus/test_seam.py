@@ -19,8 +19,8 @@ WIRE_MODULES = {"_inprocess", "_zenoh", "_zenoh_names", "_zenoh_session", "_atta
                 "_dds", "_dds_types", "_dds_qos", "_dds_raw", "_dds_graph"}
 # The bus's own modules above the seam (the package's __init__ re-exports zenoh's name helpers
 # for users of the wire format, and is not counted).
-ABOVE = ["_backend", "_node", "_graph", "_codec", "_ros1codec", "_names", "_qos", "_remap", "_domain", "_warn",
-         "_select"]
+ABOVE = ["_backend", "_node", "_graph", "_codec", "_ros1codec", "_ros1clock", "_ros1remaps", "_names", "_qos", "_remap",
+         "_domain", "_warn", "_select"]
 
 
 def _imports(path: Path) -> set[str]:

@@ -1,7 +1,8 @@
 """robot_description from the ROS 1 parameter server: robotmodel's publishers without FILE, against real ROS 1.
 
-As ROS 1's robot_state_publisher (urdf's initParam: roscpp's searchParam) they look
-``robot_description`` up the node's namespace on the real master; a rospy JointState publisher
+As ROS 1's robot_state_publisher (urdf's initParam: roscpp's searchParam) it looks
+``robot_description`` up the node's namespace on the real master (joint_state_publisher, as
+Debian's, reads its private one or its namespace's only); a rospy JointState publisher
 drives robotmodel's robot_state_publisher and a rospy tf2 listener checks the poses against
 robotmodel's FK.
 """
@@ -71,14 +72,21 @@ def test_rsp_without_file_reads_robot_description_from_the_parameter_server(ros1
     assert rsp.popen.poll() is None
 
 
-def test_rsp_and_jsp_search_robot_description_up_the_namespace(ros1: Ros1World) -> None:
-    # Set one level up from the nodes' namespace: searchParam finds /r1/robot_description from /r1/arm.
+def test_rsp_searches_robot_description_up_the_namespace_and_jsp_does_not(ros1: Ros1World) -> None:
+    # Set one level up from the nodes' namespace: RSP's searchParam finds /r1/robot_description from
+    # /r1/arm; joint_state_publisher's get_param reads ~robot_description or /r1/arm/robot_description only.
     ros1.node("setter").params.set_param("/r1/robot_description", urdf_text())
+    real_jsp = ros1.start(SYSTEM_PYTHON, "/usr/lib/joint_state_publisher/joint_state_publisher", "__ns:=/r1/arm")
+    jsp = robotmodel(ros1, "joint_state_publisher", "--namespace", "/r1/arm")
+    real_jsp.wait_line(r"RuntimeError: The robot_description parameter is required and not set\.$", 60)
+    jsp.wait_line(r"\]: The robot_description parameter is required and not set\.$", 60)
+    assert jsp.popen.wait(30) == 1, jsp.lines
     zeros = [f"{name}={value!r}" for name, value in VALUES.items() if name != "gripper_right_finger_joint"]
     robotmodel(ros1, "robot_state_publisher", "--namespace", "/r1/arm")
-    robotmodel(ros1, "joint_state_publisher", "--namespace", "/r1/arm", "--zeros", *zeros)
-    wait_until(lambda: "pub /r1/arm/joint_states" in ros1.registrations_of("/r1/arm/joint_state_publisher"), 60,
-               "joint_state_publisher in /r1/arm")
+    robotmodel(ros1, "joint_state_publisher", "--namespace", "/r1", "joint_states:=/r1/arm/joint_states",
+               "--zeros", *zeros)
+    wait_until(lambda: "pub /r1/arm/joint_states" in ros1.registrations_of("/r1/joint_state_publisher"), 60,
+               "joint_state_publisher in /r1 publishing to /r1/arm")
     check_fk(ros1, VALUES)  # the right finger mimics the left one
 
 

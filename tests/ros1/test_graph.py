@@ -71,7 +71,7 @@ def test_slave_api_answers_as_rospy_does(ros1: Ros1World) -> None:
 
 def test_node_closes_when_its_master_is_gone(ros1: Ros1World, caplog: pytest.LogCaptureFixture) -> None:
     caplog.set_level(logging.WARNING, logger="robotmodel.ros1")
-    node = ros1.node("rm_orphan")
+    node = ros1.node("rm_orphan", keepalive=False)  # (its "lost the master" line is shown in test_recovery)
     node.advertise("/chatter", "std_msgs/String")
     ros1.kill_master()
     node.close()  # one log line per registration it could not remove; no exception, no hang

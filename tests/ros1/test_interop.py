@@ -98,7 +98,8 @@ def test_robotmodel_state_publishers_to_rospy_tf2_and_the_real_tools(ros1: Ros1W
     nodes = ros1.tool("rosnode", "list").split()
     assert {"/robot_state_publisher", "/joint_state_publisher"} <= set(nodes), nodes
     topics = ros1.tool("rostopic", "list").split()
-    assert {"/tf", "/tf_static", "/joint_states", "/robot_description"} <= set(topics), topics
+    assert {"/tf", "/tf_static", "/joint_states"} <= set(topics), topics
+    assert "/robot_description" not in topics, topics  # ROS 1's RSP has the parameter only
     info = ros1.tool("rostopic", "info", "/joint_states")
     assert "Type: sensor_msgs/JointState" in info and " * /robot_state_publisher" in info, info
 

@@ -6,6 +6,7 @@ roscore seen by the real rosnode/rosparam/rostopic and a rospy tf2 listener.
 
 from __future__ import annotations
 
+import signal
 import sys
 from pathlib import Path
 
@@ -80,11 +81,16 @@ def test_rsp_takes_ros1_name_private_params_and_remaps(ros1: Ros1World) -> None:
     assert rsp.popen.poll() is None
 
 
-def test_rsp_ros1_namespace_and_default_frequency(ros1: Ros1World) -> None:
-    robotmodel(ros1, "robot_state_publisher", str(ARM), "__ns:=r1")
+def test_rsp_ros1_namespace_remapped_description_and_a_remap_that_matches_nothing(ros1: Ros1World) -> None:
+    ros1.node("setter").params.set_param("/my_desc", load(ARM).source_text)
+    # robot_description:= remaps the parameter as rospy and roscpp remap every name; use_gui:= matches nothing
+    rsp = robotmodel(ros1, "robot_state_publisher", "__ns:=r1", "robot_description:=/my_desc", "use_gui:=true")
     wait_until(lambda: "/r1/robot_state_publisher" in ros1.tool("rosnode", "list").split(), 60,
                "/r1/robot_state_publisher in rosnode list")
     assert " * /r1/robot_state_publisher" in ros1.tool("rostopic", "info", "/r1/joint_states")
+    rsp.wait_line(r"^remap 'use_gui:=true' matches no name robot_state_publisher uses", 60)
+    rsp.kill(signal.SIGINT)
+    assert rsp.popen.returncode == 0 and rsp.count(r"^remap ") == 1, rsp.lines
 
 
 def test_static_transform_publisher_and_tf2_echo_take_ros1_forms(ros1: Ros1World) -> None:

@@ -1,0 +1,57 @@
+"""ROS time for a node on the ROS 1 wire: ``/clock`` when the parameter server's ``/use_sim_time`` is true.
+
+As rospy's ``init_simtime`` and roscpp's ``ros::Time::init`` read it: ``/use_sim_time`` is
+looked at once, when the node starts. True, the node's time is the last
+``rosgraph_msgs/Clock`` on ``/clock`` (0 until the first one, and it may jump back, as when
+a bag loops); otherwise, and on every other wire, it is the system clock.
+:func:`node_clock` gives the clock; :meth:`TopicClock.wait_for_valid` is roscpp's
+``ros::Time::waitForValid`` (what lets its timers start only once time runs).
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+from typing import Any
+
+from robotmodel.time import Clock, Duration, SimClock, SystemClock, Time
+
+__all__ = ["TopicClock", "node_clock"]
+
+_STEP = Duration(seconds=0.1)
+_VALID = Time(nanoseconds=1)
+
+
+class TopicClock(SimClock):
+    """A :class:`robotmodel.time.SimClock` set by each message on ``/clock``."""
+
+    def __init__(self, node: Any) -> None:
+        from robotmodel.msgs.rosgraph_msgs import Clock as ClockMsg
+
+        super().__init__()
+        self._sub = node.create_subscription(ClockMsg, "/clock", self._on_clock, 10)
+
+    def _on_clock(self, msg: Any) -> None:
+        self.set(Time(nanoseconds=msg.clock.sec * 1_000_000_000 + msg.clock.nanosec))
+
+    def wait_for_valid(self, stop: threading.Event | None = None, timeout: float | None = None) -> bool:
+        """Block until the first ``/clock`` came (time is not 0); False when ``stop`` or ``timeout`` came first."""
+        deadline = None if timeout is None else time.monotonic() + timeout
+        while not self.sleep_until(_VALID, _STEP):
+            if (stop is not None and stop.is_set()) or (deadline is not None and time.monotonic() > deadline):
+                return False
+        return True
+
+    def close(self) -> None:
+        """Stop following ``/clock``."""
+        self._sub.close()
+
+
+def node_clock(node: Any) -> Clock:
+    """The clock of ``node``'s ROS time: a :class:`TopicClock` on ROS 1 with ``/use_sim_time`` true, else the system."""
+    if node.context.backend.name != "ros1":
+        return SystemClock()
+    store = node.parameters
+    if not (store.has("/use_sim_time") and store.get("/use_sim_time") is True):
+        return SystemClock()
+    return TopicClock(node)
