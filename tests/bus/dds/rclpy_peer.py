@@ -15,6 +15,9 @@ Roles:
 - ``graph NODE TOPIC``: node ``rclpy_observer`` prints ``nodes [[name, ns], ...]`` once NODE is
   listed, then ``publishers [...]`` with each publisher's node name and QoS on TOPIC.
 - ``best_effort_talker``: node ``rclpy_be`` publishes std_msgs/String best effort on /qos_probe.
+- ``describer FILE STATE``: node ``rclpy_describer`` publishes FILE's text once as std_msgs/String
+  on /robot_description (reliable, transient local, depth 1, as robot_state_publisher does) and
+  sensor_msgs/JointState STATE (JSON ``{name: position}``) on /joint_states every 50 ms.
 - ``latched_listener``: node ``rclpy_tl`` subscribes std_msgs/String on /qos_probe, reliable and
   transient local, and prints ``event POLICY`` for each incompatible publisher rclpy reports.
 """
@@ -92,6 +95,26 @@ def main(argv: list[str]) -> int:
         pub = node.create_publisher(String, "/qos_probe",
                                     QoSProfile(depth=10, reliability=ReliabilityPolicy.BEST_EFFORT))
         node.create_timer(0.05, lambda: pub.publish(String(data="be")))
+    elif role == "describer":
+        from pathlib import Path
+
+        from sensor_msgs.msg import JointState
+        from std_msgs.msg import String
+
+        path, state_json = args
+        state = json.loads(state_json)
+        node = Node("rclpy_describer")
+        latched = QoSProfile(depth=1, reliability=ReliabilityPolicy.RELIABLE,
+                             durability=DurabilityPolicy.TRANSIENT_LOCAL)
+        node.create_publisher(String, "/robot_description", latched).publish(String(data=Path(path).read_text()))
+        joints = node.create_publisher(JointState, "/joint_states", 10)
+
+        def send_state() -> None:
+            msg = JointState(name=list(state), position=[float(v) for v in state.values()])
+            msg.header.stamp = node.get_clock().now().to_msg()
+            joints.publish(msg)
+
+        node.create_timer(0.05, send_state)
     elif role == "latched_listener":
         from rclpy.event_handler import SubscriptionEventCallbacks
         from std_msgs.msg import String

@@ -8,7 +8,6 @@ from the numbers given on the command line; nothing here is on zenoh.
 
 from __future__ import annotations
 
-import json
 import math
 import re
 import signal
@@ -21,6 +20,7 @@ import numpy as np
 import pytest
 from conftest import BUNDLED
 from livebus import Bus, Proc
+from viewerws import viewer_config
 
 from robotmodel.kinematics import KinematicModel, KinematicState
 from robotmodel.model import load
@@ -158,37 +158,6 @@ def case_joint_state_publisher_gui(bus: Bus) -> None:
     assert names and positions, text
     state = dict(zip(names.group(1).split(", "), map(float, positions.group(1).split(", ")), strict=True))
     assert state["arm_elbow_joint"] == 0.4 and state["arm_shoulder_joint"] == 0.0
-
-
-def viewer_config(url: str, predicate: Callable[[dict[str, object]], bool]) -> dict[str, object]:
-    """The viewer page's config message (robot, joint values), read over its websocket until ``predicate``."""
-    import asyncio
-
-    import tornado.websocket
-
-    async def read() -> dict[str, object]:
-        ws_url = url.replace("http://", "ws://") + "ws"
-        request = tornado.httpclient.HTTPRequest(ws_url, headers={"Origin": url.rstrip("/")})
-        end = time.monotonic() + DEADLINE_S
-        while True:
-            conn = await tornado.websocket.websocket_connect(request)
-            try:
-                while True:
-                    message = await conn.read_message()
-                    if message is None or isinstance(message, bytes):
-                        continue
-                    data = json.loads(message)
-                    if data.get("type") == "config":
-                        break
-            finally:
-                conn.close()
-            if predicate(data) or time.monotonic() > end:
-                return dict(data)
-            await asyncio.sleep(0.2)
-
-    import tornado.httpclient
-
-    return asyncio.run(read())
 
 
 def case_view_follow(bus: Bus) -> None:
