@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import json
 import logging
-import os
 import re
 import threading
 import time
@@ -22,6 +21,7 @@ from typing import Any
 
 import numpy as np
 import pytest
+from rclpyside import DEADLINE_S, MISSING, ROOT
 from viewerws import viewer_config
 
 from robotmodel.bus import QOS_LATCHED, Context, EntityKind, Node, QoS, Reliability, typestore
@@ -29,33 +29,11 @@ from robotmodel.kinematics import KinematicModel, KinematicState
 from robotmodel.model import load
 from robotmodel.xacro import expand
 
-ROOT = Path(__file__).resolve().parents[3]
-PEER = Path(__file__).with_name("rclpy_peer.py")
-RCLPY = Path(os.environ.get("ROBOTMODEL_RCLPY_PYTHON", str(ROOT / ".venv-rclpy" / "bin" / "python")))
-# Generous for a loaded 2-core machine (Fast DDS and Cyclone each discover in about a second).
-DEADLINE_S = 30.0
-
-if not RCLPY.exists():
-    pytest.skip(f"no real rclpy at {RCLPY} (run .ci/rclpy-venv)", allow_module_level=True)
+if MISSING:
+    pytest.skip(MISSING, allow_module_level=True)
 
 STRING = "std_msgs/msg/String"
 JOINT_STATE = "sensor_msgs/msg/JointState"
-
-
-@pytest.fixture
-def rclpy(procs: Any, bus_env: dict[str, str], tmp_path: Path) -> Callable[..., Any]:
-    """Start a role of rclpy_peer.py on Fast DDS in this test's domain, kept on this machine."""
-    env = {k: v for k, v in bus_env.items() if not k.startswith(("PYTHON", "VIRTUAL_ENV"))}
-    env.update(RMW_IMPLEMENTATION="rmw_fastrtps_cpp", ROS_AUTOMATIC_DISCOVERY_RANGE="LOCALHOST",
-               ROS_HOME=str(tmp_path), ROS_LOG_DIR=str(tmp_path / "log"), PYTHONUNBUFFERED="1")
-    env.pop("ROS_LOCALHOST_ONLY", None)
-
-    def start(*args: str) -> Any:
-        proc = procs.run([str(RCLPY), str(PEER), *args], env=env)
-        proc.wait_line("ready", timeout=DEADLINE_S)
-        return proc
-
-    return start
 
 
 @pytest.fixture
