@@ -54,7 +54,7 @@ from robotmodel.bus._backend import (
     SampleInfo,
 )
 from robotmodel.bus._dds_graph import DdsGraph, LocalNode
-from robotmodel.bus._dds_qos import POLICY_NAMES, cyclone_config, qos_to_dds
+from robotmodel.bus._dds_qos import POLICY_NAMES, check_peers, cyclone_config, qos_to_dds
 from robotmodel.bus._dds_raw import Pump, destroy, make_listener, take_raw, write_raw
 from robotmodel.bus._dds_types import dds_topic_name, idl_type
 from robotmodel.bus._qos import QoS, incompatible_policy
@@ -163,6 +163,7 @@ class DdsBackend(Backend):
         """See :meth:`Backend.open` (``connect``: extra unicast peers, as ROS_STATIC_PEERS)."""
         if not 0 <= domain_id <= 232:
             raise BusError(f"ROS_DOMAIN_ID {domain_id} is out of DDS's range 0..232")
+        check_peers(connect)
         _enter_domain(domain_id, connect)
         try:
             # rmw_cyclonedds_cpp puts the enclave into the participant's USER_DATA.

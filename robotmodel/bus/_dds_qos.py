@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import os
 import re
+import socket
 from collections.abc import Mapping, Sequence
 from typing import Any
 from xml.sax.saxutils import quoteattr
@@ -29,6 +30,7 @@ from robotmodel.errors import BusError
 
 __all__ = [
     "POLICY_NAMES",
+    "check_peers",
     "cyclone_config",
     "discovery_range",
     "qos_from_dds",
@@ -135,6 +137,37 @@ def static_peers(env: Mapping[str, str] | None = None) -> list[str]:
     env = os.environ if env is None else env
     text = env.get("ROS_STATIC_PEERS", "")
     return [p.strip() for p in text.split(";") if p.strip()]
+
+
+def _peer_host(peer: str) -> str:
+    # Cyclone's peer forms: a host name or IPv4 address with an optional ':port' (an IPv6
+    # address, bracketed before a port, is taken apart too, to be refused by name).
+    if peer.startswith("["):
+        return peer[1:].split("]", 1)[0]
+    host, sep, port = peer.rpartition(":")
+    return host if sep and host.count(":") == 0 and port.isdigit() else peer
+
+
+def check_peers(connect: Sequence[str] = (), env: Mapping[str, str] | None = None) -> None:
+    """Raise BusError naming the first peer (``connect``, then ROS_STATIC_PEERS) that is not a host here.
+
+    Cyclone aborts the whole process on a peer address it cannot resolve, so each is resolved
+    first; a zenoh endpoint (``tcp/HOST:PORT``) given on the DDS wire is named as one.
+    """
+    origins = [(p, "connect") for p in connect] + [(p, "ROS_STATIC_PEERS") for p in static_peers(env)]
+    for peer, origin in origins:
+        where = f"DDS peer '{peer}' (from {origin})"
+        if "/" in peer:
+            raise BusError(f"{where} is not a host: the DDS wire takes host names or addresses, as "
+                           "ROS_STATIC_PEERS does (a zenoh endpoint needs RMW_IMPLEMENTATION=rmw_zenoh_cpp)")
+        host = _peer_host(peer.strip())
+        try:
+            if not host or any(c.isspace() for c in host):
+                raise OSError("not a host name")
+            # Cyclone runs on UDP over IPv4 here: an IPv6-only peer would abort it too.
+            socket.getaddrinfo(host, None, socket.AF_INET)
+        except (OSError, UnicodeError) as exc:
+            raise BusError(f"{where} is not a host name or IPv4 address this machine can resolve ({exc})") from None
 
 
 def cyclone_config(connect: Sequence[str] = (), env: Mapping[str, str] | None = None) -> str:

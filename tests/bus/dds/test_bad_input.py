@@ -8,12 +8,16 @@
   joint_state_publisher cannot serve.
 
 Each warning is rclcpp's/rclpy's text; the command keeps doing its job beside the bad peer.
+A peer address Cyclone cannot use (``--connect``, ``ROS_STATIC_PEERS``) is one error line, not
+Cyclone's abort of the process.
 """
 
 from __future__ import annotations
 
 import json
 import re
+import subprocess
+import sys
 import time
 from typing import Any
 
@@ -113,3 +117,22 @@ def test_an_incompatible_qos_is_rclpys_line_on_both_sides_and_publishing_goes_on
     assert "- arm_shoulder_joint" in done.lines
     assert len(lines_with(jsp, "incompatible QoS")) == 1 and jsp.popen.poll() is None
     assert not [ln for ln in listener.lines if ln.startswith("got ")]
+
+
+@pytest.mark.parametrize(("how", "peer", "text"), [
+    ("--connect", "tcp/127.0.0.1:7447", "is not a host: the DDS wire takes host names or addresses"),
+    ("--connect", "nonexistent.invalid", "is not a host name or IPv4 address this machine can resolve"),
+    ("--connect", "[::1]", "is not a host name or IPv4 address this machine can resolve"),
+    ("ROS_STATIC_PEERS", "nonexistent.invalid", "is not a host name or IPv4 address this machine can resolve"),
+], ids=["zenoh-endpoint", "unresolvable", "ipv6", "static-peers"])
+def test_a_peer_cyclone_cannot_use_is_one_line_not_an_abort(bus_env: dict[str, str], how: str, peer: str,
+                                                           text: str) -> None:
+    # Cyclone aborts the process (SIGABRT) on a peer address it cannot resolve.
+    env = dict(bus_env, ROS_STATIC_PEERS=peer) if how == "ROS_STATIC_PEERS" else bus_env
+    args = ["--connect", peer] if how == "--connect" else []
+    done = subprocess.run([sys.executable, "-m", "robotmodel.cli.main", "topic", "list", *args], env=env,
+                          capture_output=True, text=True, timeout=60, check=False)
+    assert done.returncode == 1, (done.returncode, done.stderr)
+    origin = "connect" if how == "--connect" else "ROS_STATIC_PEERS"
+    assert done.stderr.splitlines() == [done.stderr.strip()] and done.stdout == ""
+    assert f"robotmodel topic: error: DDS peer '{peer}' (from {origin}) {text}" in done.stderr
