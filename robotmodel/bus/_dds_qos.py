@@ -5,17 +5,20 @@ The mapping is rmw_cyclonedds_cpp's: reliability, durability, history and depth 
 their lease where not infinite, and Jazzy's ``typehash=RIHS01_...;`` in USER_DATA.
 
 Discovery follows REP 2016 as rmw_cyclonedds_cpp turns it into Cyclone's configuration:
-``ROS_AUTOMATIC_DISCOVERY_RANGE`` LOCALHOST (robotmodel's default, also what the deprecated
-``ROS_LOCALHOST_ONLY=1`` means) keeps Cyclone on the loopback interface without multicast
-and finds the others by unicast to the well-known ports of participant indices on
-localhost; SUBNET uses Cyclone's defaults (multicast on the machine's interface); OFF
-finds no one; ``ROS_STATIC_PEERS`` (``;``-separated hosts) are added as unicast peers.
+``ROS_AUTOMATIC_DISCOVERY_RANGE`` LOCALHOST (robotmodel's default) keeps Cyclone on the
+loopback interface without multicast and finds the others by unicast to the well-known
+ports of participant indices on localhost; SUBNET uses Cyclone's defaults (multicast on
+the machine's interface); OFF finds no one; ``ROS_STATIC_PEERS`` (``;``-separated hosts)
+are added as unicast peers. As rcl (Jazzy) reads them, the deprecated
+``ROS_LOCALHOST_ONLY=1`` means LOCALHOST with the range and static peers ignored, and OFF
+ignores static peers, each with rcl's warning.
 
 Only the DDS wire uses this module (it is below the backend seam).
 """
 
 from __future__ import annotations
 
+import logging
 import os
 import re
 import socket
@@ -27,6 +30,8 @@ from cyclonedds.core import Policy, Qos
 
 from robotmodel.bus._qos import DURATION_INFINITE_NS, Durability, History, Liveliness, QoS, Reliability
 from robotmodel.errors import BusError
+
+log = logging.getLogger("robotmodel.bus")
 
 __all__ = [
     "POLICY_NAMES",
@@ -174,9 +179,17 @@ def cyclone_config(connect: Sequence[str] = (), env: Mapping[str, str] | None = 
     """Cyclone's configuration XML for a domain, from the discovery range, static peers and ``connect``."""
     env = os.environ if env is None else env
     rng = discovery_range(env)
-    if env.get("ROS_LOCALHOST_ONLY", "") == "1" and not env.get("ROS_AUTOMATIC_DISCOVERY_RANGE"):
-        rng = "LOCALHOST"
-    peers = [*static_peers(env), *connect]
+    statics = static_peers(env)
+    if env.get("ROS_LOCALHOST_ONLY", "").strip() == "1":
+        # rcl (Jazzy): honoured, warned about, and the range and static peers are ignored.
+        log.warning("ROS_LOCALHOST_ONLY is deprecated but still honored if it is enabled. "
+                    "Use ROS_AUTOMATIC_DISCOVERY_RANGE and ROS_STATIC_PEERS instead.")
+        rng, statics = "LOCALHOST", []
+    elif rng == "OFF" and statics:
+        log.warning("Note: ROS_AUTOMATIC_DISCOVERY_RANGE is set to OFF, but found static peers in "
+                    "ROS_STATIC_PEERS. ROS_STATIC_PEERS will be ignored.")
+        statics = []
+    peers = [*statics, *connect]
     general = discovery = ""
     if rng in ("LOCALHOST", "OFF"):
         general = ('<Interfaces><NetworkInterface address="127.0.0.1" multicast="false"/></Interfaces>'
