@@ -20,7 +20,7 @@ import numpy as np
 import pytest
 from conftest import BUNDLED
 from livebus import Bus, Proc
-from viewerws import viewer_config
+from viewerws import State, viewer_state
 
 from robotmodel.kinematics import KinematicModel, KinematicState
 from robotmodel.model import load
@@ -161,19 +161,23 @@ def case_joint_state_publisher_gui(bus: Bus) -> None:
 
 
 def case_view_follow(bus: Bus) -> None:
-    # No FILE: the robot comes from /robot_description, its joints from /joint_states, both on DDS.
+    # No FILE: the robot comes from /robot_description, its joints from /joint_states, and the
+    # --tf frames from /tf and /tf_static, all on DDS.
     bus.robotmodel("robot_state_publisher", str(ARM))
     bus.robotmodel("joint_state_publisher", str(ARM), "--zeros", *ZEROS)
     view = bus.robotmodel("view", "--follow", "--tf", "--port", "0")
     url = view.wait_line(r"^(http://127\.0\.0\.1:\d+/)", timeout=DEADLINE_S).group(1)
 
-    def followed(config: dict[str, object]) -> bool:
-        values = {j["name"]: j["value"] for j in config["joints"]}  # type: ignore[attr-defined]
-        return all(abs(values.get(name, 9.0) - value) < 1e-9 for name, value in JOINTS.items())
+    def followed(state: State) -> bool:
+        config, frames = state
+        values = {j["name"]: j["value"] for j in config.get("joints", [])}
+        palm = frames.get("gripper_palm_link")
+        return all(abs(values.get(name, 9.0) - value) < 1e-9 for name, value in JOINTS.items()) and \
+            palm is not None and np.allclose(palm, fk_palm(), atol=1e-5)
 
-    config = viewer_config(url, followed)
+    config, frames = viewer_state(url, followed)
     assert config["robot"] == "arm" and config["follow"] is True
-    assert followed(config), config["joints"]
+    assert followed((config, frames)), (config.get("joints"), frames.get("gripper_palm_link"))
 
 
 def case_launch(bus: Bus) -> None:
