@@ -130,16 +130,16 @@ class Procs:
 
 
 @pytest.fixture
-def wire() -> str:
+def bus_wire() -> str:
     """The wire the processes of a test here speak (tests/bus/dds overrides it with "dds")."""
     return "zenoh"
 
 
 @pytest.fixture
-def bus_env(monkeypatch: pytest.MonkeyPatch, wire: str) -> Iterator[dict[str, str]]:
-    """An environment on ``wire`` with a private rendezvous port and ROS domain, also set for this process."""
+def bus_env(monkeypatch: pytest.MonkeyPatch, bus_wire: str) -> Iterator[dict[str, str]]:
+    """An environment on ``bus_wire`` with a private rendezvous port and ROS domain, also set for this process."""
     lease = DomainLease()
-    env = set_wire(dict(os.environ), wire)
+    env = set_wire(dict(os.environ), bus_wire)
     env["ROBOTMODEL_ZENOH_PORT"] = str(free_port())
     env["ROS_DOMAIN_ID"] = str(lease.domain_id)
     env.pop("ZENOH_SESSION_CONFIG_URI", None)

@@ -11,7 +11,7 @@ from rclpyside import DEADLINE_S, MISSING, PEER, RCLPY, rclpy_env
 
 
 @pytest.fixture
-def wire() -> str:
+def bus_wire() -> str:
     """The DDS wire, for ``bus_env`` and the processes ``procs`` starts."""
     return "dds"
 
