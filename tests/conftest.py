@@ -24,6 +24,11 @@ settings.load_profile("robotmodel")
 # process the tests start onto the ROS 1 wire (robotmodel.bus.default_wire); the tests name
 # the ROS 1 wire where they mean it (tests/ros1, the conformance suite's "ros1" cases).
 os.environ.pop("ROS_VERSION", None)
+# Every test names its wire (robotmodel's own default is DDS unless the shell says otherwise):
+# the live fixtures set RMW_IMPLEMENTATION per bus (livebus.set_wire, tests/bus's ``wire``),
+# and what starts outside them (an in-process Context() without a backend, a child started
+# with this environment) is on zenoh, the wire those tests were written for.
+os.environ["RMW_IMPLEMENTATION"] = "rmw_zenoh_cpp"
 
 REPO = Path(__file__).resolve().parents[1]
 # Real robot packages for the corpus tests: $ROBOTMODEL_CORPUS, else shared/corpus beside the

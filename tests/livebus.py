@@ -54,6 +54,24 @@ class DomainLease:
             self._fd = -1
 
 
+#: The RMW_IMPLEMENTATION that puts a robotmodel process on each wire a live test names.
+RMW_OF_WIRE = {"zenoh": "rmw_zenoh_cpp", "dds": "rmw_cyclonedds_cpp"}
+
+
+def set_wire(env: dict[str, str], wire: str) -> dict[str, str]:
+    """Put ``env`` on ``wire`` ("zenoh" or "dds") by RMW_IMPLEMENTATION, as a user's shell would; returns it.
+
+    A live test names its wire: robotmodel's own default (DDS unless the shell says otherwise)
+    must not decide it. DDS discovery stays on loopback (ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST)
+    whatever the developer's shell widened, and without a ROS 1 setup's variables.
+    """
+    env["RMW_IMPLEMENTATION"] = RMW_OF_WIRE[wire]
+    for key in ("ROS_VERSION", "ROS_MASTER_URI", "ROS_STATIC_PEERS", "ROS_LOCALHOST_ONLY"):
+        env.pop(key, None)
+    env["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "LOCALHOST"
+    return env
+
+
 def free_port() -> int:
     """A loopback TCP port free right now (the bus's rendezvous port for one test)."""
     with socket.socket() as s:
@@ -145,11 +163,12 @@ class Proc:
 
 
 class Bus:
-    """One test's bus (own rendezvous port and ROS_DOMAIN_ID) and the processes started on it."""
+    """One test's bus (own rendezvous port and ROS_DOMAIN_ID, on ``wire``) and the processes started on it."""
 
-    def __init__(self, cwd: Path) -> None:
+    def __init__(self, cwd: Path, wire: str = "zenoh") -> None:
         self.cwd = cwd
-        self.env = dict(os.environ)
+        self.wire = wire
+        self.env = set_wire(dict(os.environ), wire)
         self.env["ROBOTMODEL_ZENOH_PORT"] = str(free_port())
         self.lease = DomainLease()
         self.env["ROS_DOMAIN_ID"] = str(self.lease.domain_id)
@@ -183,7 +202,7 @@ B = TypeVar("B", bound=Bus)
 
 def joined(bus: B, monkeypatch: pytest.MonkeyPatch) -> Iterator[B]:
     """Yield ``bus`` with the test process on it too (its env set); every child is reaped after."""
-    for key in ("ROBOTMODEL_ZENOH_PORT", "ROS_DOMAIN_ID"):
+    for key in ("ROBOTMODEL_ZENOH_PORT", "ROS_DOMAIN_ID", "RMW_IMPLEMENTATION", "ROS_AUTOMATIC_DISCOVERY_RANGE"):
         monkeypatch.setenv(key, bus.env[key])
     monkeypatch.delenv("ZENOH_SESSION_CONFIG_URI", raising=False)
     try:
@@ -194,8 +213,8 @@ def joined(bus: B, monkeypatch: pytest.MonkeyPatch) -> Iterator[B]:
 
 @pytest.fixture
 def bus(tmp_path: Path) -> Iterator[Bus]:
-    """A fresh bus for one test; every process started on it is reaped afterwards."""
-    b = Bus(tmp_path)
+    """A fresh zenoh bus for one test; every process started on it is reaped afterwards."""
+    b = Bus(tmp_path, "zenoh")
     try:
         yield b
     finally:

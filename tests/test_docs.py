@@ -180,7 +180,7 @@ def test_the_marked_blocks_are_found() -> None:
 @pytest.mark.parametrize(("where", "code", "output", "needs"), BLOCKS, ids=[b[0] for b in BLOCKS])
 def test_marked_python_block_runs_and_prints_what_the_page_shows(tmp_path: Path, where: str, code: str,
                                                                  output: str | None, needs: str) -> None:
-    bus = Bus(tmp_path)
+    bus = Bus(tmp_path, "zenoh")
     try:
         for command in filter(None, (c.strip() for c in needs.split(";"))):
             words = command.split()

@@ -1,10 +1,11 @@
-"""A ROS 2 bus without ROS: zenoh in rmw_zenoh's wire format, with rclpy's shape.
+"""A ROS bus without ROS, with rclpy's shape: ROS 2 on DDS or rmw_zenoh, or ROS 1.
 
-Processes using it talk to each other and to ROS 2 nodes running rmw_zenoh (Jazzy and
-later): the same key expressions, CDR payloads, attachments and liveliness tokens. Nodes
-speak ROS through one backend seam (:mod:`robotmodel.bus._backend`, its contract in the
-docstring), behind which each wire lives: ``"zenoh"``, ``"ros1"`` (a ROS 1 master and
-TCPROS) and ``"inprocess"`` today; :func:`default_wire` picks one from the environment.
+Processes using it talk to each other and to ROS nodes on the same wire: ROS 2 on DDS
+(``"dds"``, the default, as a stock ROS 2), rmw_zenoh's key expressions, CDR payloads,
+attachments and liveliness tokens (``"zenoh"``, Jazzy and later), or a ROS 1 master and
+TCPROS (``"ros1"``). Nodes speak ROS through one backend seam (:mod:`robotmodel.bus._backend`,
+its contract in the docstring), behind which each wire lives, with ``"inprocess"`` for one
+process; :func:`default_wire` picks one from the environment as ROS does.
 
 >>> from robotmodel.bus import Node, typestore
 >>> String = typestore().types["std_msgs/msg/String"]   # any class with __msgtype__ works
@@ -19,7 +20,9 @@ TCPROS) and ``"inprocess"`` today; :func:`default_wire` picks one from the envir
 Topology (zenoh backend): peers on 127.0.0.1 only, meeting at the well-known port 7447
 (``ROBOTMODEL_ZENOH_PORT``), or at ``connect=[...]`` endpoints, or as configured by
 ``ZENOH_SESSION_CONFIG_URI``; see :mod:`robotmodel.bus._config`. ``robotmodel router``
-runs a zenoh router for machines to meet. ``ROS_DOMAIN_ID`` picks the domain.
+runs a zenoh router for machines to meet. Topology (DDS backend): discovery on loopback
+unless ``ROS_AUTOMATIC_DISCOVERY_RANGE`` or ``ROS_STATIC_PEERS`` widen it, as REP 2016 says
+(:mod:`robotmodel.bus._dds_qos`). ``ROS_DOMAIN_ID`` picks the domain.
 
 Pieces: :class:`Node` (publishers, subscriptions, graph queries, parameters),
 :class:`Context` (one session shared by nodes), :class:`Graph` and its :class:`Entity`

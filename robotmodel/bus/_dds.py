@@ -7,6 +7,9 @@ QoS with Jazzy's type hash in USER_DATA (:mod:`._dds_qos`), and nodes are announ
 ``ros_discovery_info`` (:mod:`._dds_graph`). Each session is one DDS participant; matching,
 durability, history and the refusal of incompatible QoS are DDS's own, and Cyclone's
 offered/requested-incompatible-QoS statuses become the seam's :class:`QoSEvent`.
+A peer whose type cannot match an endpoint's (another type name on the topic, as the graph
+shows it, or another definition under the same name, which Cyclone refuses by XTypes type
+consistency) gets ROS's incompatible-type warning, once per endpoint and peer type.
 
 A sample's GID is its writer's GUID; DDS carries no per-sample sequence number to the
 reader here, so the sequence number is counted per writer on receipt. An untyped
@@ -51,7 +54,7 @@ from robotmodel.bus._backend import (
     SampleInfo,
 )
 from robotmodel.bus._dds_graph import DdsGraph, LocalNode
-from robotmodel.bus._dds_qos import POLICY_NAMES, cyclone_config, qos_to_dds
+from robotmodel.bus._dds_qos import POLICY_NAMES, check_peers, cyclone_config, qos_to_dds
 from robotmodel.bus._dds_raw import Pump, destroy, make_listener, take_raw, write_raw
 from robotmodel.bus._dds_types import dds_topic_name, idl_type
 from robotmodel.bus._qos import QoS, incompatible_policy
@@ -87,11 +90,49 @@ def _leave_domain(domain_id: int) -> None:
             destroy(entry[0])
 
 
-def _qos_listener(on_qos_event: QoSEventCallback | None, topic: str, offered: bool) -> dict[str, Any]:
-    if on_qos_event is None:
+# DDS_TYPE_CONSISTENCY_ENFORCEMENT_QOS_POLICY_ID: Cyclone's reason when a peer's type
+# definition cannot be assigned to the endpoint's; ROS reports that as an incompatible type.
+_TYPE_CONSISTENCY = 24
+
+
+class _TypeCheck:
+    """ROS's incompatible-type warning for one endpoint: once per other type seen on its topic.
+
+    rclcpp's and rclpy's default incompatible-type handlers' text; a peer under another type
+    name never matches in DDS and so is only visible in the graph, a peer with another
+    definition under the same name is refused by Cyclone (reported as type consistency).
+    """
+
+    def __init__(self, topic: str, typename: str, peer_kind: str) -> None:
+        self.topic, self.typename, self._peer_kind = topic, typename, peer_kind
+        self._seen: set[str] = set()
+        self._lock = threading.Lock()
+
+    def warn(self, other: str) -> None:
+        with self._lock:
+            if other in self._seen:
+                return
+            self._seen.add(other)
+        log.warning("Incompatible type on topic '%s', no messages will be sent to it.", self.topic)
+
+    def on_entity(self, _key: str, entity: Entity | None) -> None:
+        if (entity is not None and entity.topic == self.topic and entity.kind.value == self._peer_kind
+                and entity.typename and entity.typename != self.typename):
+            self.warn(entity.typename)
+
+
+def _qos_listener(on_qos_event: QoSEventCallback | None, topic: str, offered: bool,
+                  types: _TypeCheck | None = None) -> dict[str, Any]:
+    if on_qos_event is None and types is None:
         return {}
 
     def on_status(_entity: Any, status: Any) -> None:
+        if int(status.last_policy_id) == _TYPE_CONSISTENCY:
+            if types is not None:
+                types.warn(f"{types.typename} (another definition)")
+            return
+        if on_qos_event is None:
+            return
         policy = POLICY_NAMES.get(int(status.last_policy_id), "INVALID")
         try:
             on_qos_event(QoSEvent(int(status.total_count), int(status.total_count_change), policy, topic))
@@ -122,6 +163,7 @@ class DdsBackend(Backend):
         """See :meth:`Backend.open` (``connect``: extra unicast peers, as ROS_STATIC_PEERS)."""
         if not 0 <= domain_id <= 232:
             raise BusError(f"ROS_DOMAIN_ID {domain_id} is out of DDS's range 0..232")
+        check_peers(connect)
         _enter_domain(domain_id, connect)
         try:
             # rmw_cyclonedds_cpp puts the enclave into the participant's USER_DATA.
@@ -263,11 +305,13 @@ class DdsPublisher(PublisherHandle):
         self._node = node
         self.topic = topic
         self.typename = mtype.typename
-        self._listener = make_listener(**_qos_listener(on_qos_event, topic, offered=True))
+        self._types = _TypeCheck(topic, mtype.typename, "subscription")
+        self._listener = make_listener(**_qos_listener(on_qos_event, topic, offered=True, types=self._types))
         self._writer: Any = DataWriter(backend.participant, backend.topic(topic, mtype.typename),
                                        qos_to_dds(qos, mtype.type_hash), listener=self._listener)
         self._gid: bytes = self._writer.guid.bytes
         self._lock = threading.Lock()
+        backend.graph.watch(self._types.on_entity)
 
     @property
     def gid(self) -> bytes:
@@ -291,6 +335,7 @@ class DdsPublisher(PublisherHandle):
         with self._lock:
             writer, self._writer = self._writer, None
         if writer is not None:
+            self._node.backend.graph.unwatch(self._types.on_entity)
             destroy(writer)
             self._node.forget(self, self._gid)
 
@@ -311,11 +356,16 @@ class DdsSubscription(Handle):
         # drain must find no reader then, not a missing attribute; the poke below catches up.
         self._reader: Any = None
         self._pump = Pump(f"dds-sub {topic}", self._drain)
-        self._listener = self._pump.listener(**_qos_listener(on_qos_event, topic, offered=False))
+        # An untyped subscription's reader is one of several types on purpose: no type warnings.
+        self._types = _TypeCheck(topic, typename, "publisher") if announce else None
+        self._listener = self._pump.listener(**_qos_listener(on_qos_event, topic, offered=False, types=self._types))
         self._reader = DataReader(backend.participant, backend.topic(topic, typename),
                                   qos_to_dds(qos, type_hash), listener=self._listener)
         self.gid: bytes = self._reader.guid.bytes
         self._warner = Warner()
+        self._graph = backend.graph
+        if self._types is not None:
+            self._graph.watch(self._types.on_entity)
         self._pump.poke()
 
     def _writer_gid(self, handle: int) -> bytes:
@@ -347,6 +397,8 @@ class DdsSubscription(Handle):
         reader, self._reader = self._reader, None
         if reader is None:
             return
+        if self._types is not None:
+            self._graph.unwatch(self._types.on_entity)
         self._pump.close()
         destroy(reader)
         if self._node is not None:

@@ -5,19 +5,23 @@ The mapping is rmw_cyclonedds_cpp's: reliability, durability, history and depth 
 their lease where not infinite, and Jazzy's ``typehash=RIHS01_...;`` in USER_DATA.
 
 Discovery follows REP 2016 as rmw_cyclonedds_cpp turns it into Cyclone's configuration:
-``ROS_AUTOMATIC_DISCOVERY_RANGE`` LOCALHOST (robotmodel's default, also what the deprecated
-``ROS_LOCALHOST_ONLY=1`` means) keeps Cyclone on the loopback interface without multicast
-and finds the others by unicast to the well-known ports of participant indices on
-localhost; SUBNET uses Cyclone's defaults (multicast on the machine's interface); OFF
-finds no one; ``ROS_STATIC_PEERS`` (``;``-separated hosts) are added as unicast peers.
+``ROS_AUTOMATIC_DISCOVERY_RANGE`` LOCALHOST (robotmodel's default) keeps Cyclone on the
+loopback interface without multicast and finds the others by unicast to the well-known
+ports of participant indices on localhost; SUBNET uses Cyclone's defaults (multicast on
+the machine's interface); OFF finds no one; ``ROS_STATIC_PEERS`` (``;``-separated hosts)
+are added as unicast peers. As rcl (Jazzy) reads them, the deprecated
+``ROS_LOCALHOST_ONLY=1`` means LOCALHOST with the range and static peers ignored, and OFF
+ignores static peers, each with rcl's warning.
 
 Only the DDS wire uses this module (it is below the backend seam).
 """
 
 from __future__ import annotations
 
+import logging
 import os
 import re
+import socket
 from collections.abc import Mapping, Sequence
 from typing import Any
 from xml.sax.saxutils import quoteattr
@@ -27,8 +31,11 @@ from cyclonedds.core import Policy, Qos
 from robotmodel.bus._qos import DURATION_INFINITE_NS, Durability, History, Liveliness, QoS, Reliability
 from robotmodel.errors import BusError
 
+log = logging.getLogger("robotmodel.bus")
+
 __all__ = [
     "POLICY_NAMES",
+    "check_peers",
     "cyclone_config",
     "discovery_range",
     "qos_from_dds",
@@ -137,13 +144,52 @@ def static_peers(env: Mapping[str, str] | None = None) -> list[str]:
     return [p.strip() for p in text.split(";") if p.strip()]
 
 
+def _peer_host(peer: str) -> str:
+    # Cyclone's peer forms: a host name or IPv4 address with an optional ':port' (an IPv6
+    # address, bracketed before a port, is taken apart too, to be refused by name).
+    if peer.startswith("["):
+        return peer[1:].split("]", 1)[0]
+    host, sep, port = peer.rpartition(":")
+    return host if sep and host.count(":") == 0 and port.isdigit() else peer
+
+
+def check_peers(connect: Sequence[str] = (), env: Mapping[str, str] | None = None) -> None:
+    """Raise BusError naming the first peer (``connect``, then ROS_STATIC_PEERS) that is not a host here.
+
+    Cyclone aborts the whole process on a peer address it cannot resolve, so each is resolved
+    first; a zenoh endpoint (``tcp/HOST:PORT``) given on the DDS wire is named as one.
+    """
+    origins = [(p, "connect") for p in connect] + [(p, "ROS_STATIC_PEERS") for p in static_peers(env)]
+    for peer, origin in origins:
+        where = f"DDS peer '{peer}' (from {origin})"
+        if "/" in peer:
+            raise BusError(f"{where} is not a host: the DDS wire takes host names or addresses, as "
+                           "ROS_STATIC_PEERS does (a zenoh endpoint needs RMW_IMPLEMENTATION=rmw_zenoh_cpp)")
+        host = _peer_host(peer.strip())
+        try:
+            if not host or any(c.isspace() for c in host):
+                raise OSError("not a host name")
+            # Cyclone runs on UDP over IPv4 here: an IPv6-only peer would abort it too.
+            socket.getaddrinfo(host, None, socket.AF_INET)
+        except (OSError, UnicodeError) as exc:
+            raise BusError(f"{where} is not a host name or IPv4 address this machine can resolve ({exc})") from None
+
+
 def cyclone_config(connect: Sequence[str] = (), env: Mapping[str, str] | None = None) -> str:
     """Cyclone's configuration XML for a domain, from the discovery range, static peers and ``connect``."""
     env = os.environ if env is None else env
     rng = discovery_range(env)
-    if env.get("ROS_LOCALHOST_ONLY", "") == "1" and not env.get("ROS_AUTOMATIC_DISCOVERY_RANGE"):
-        rng = "LOCALHOST"
-    peers = [*static_peers(env), *connect]
+    statics = static_peers(env)
+    if env.get("ROS_LOCALHOST_ONLY", "").strip() == "1":
+        # rcl (Jazzy): honoured, warned about, and the range and static peers are ignored.
+        log.warning("ROS_LOCALHOST_ONLY is deprecated but still honored if it is enabled. "
+                    "Use ROS_AUTOMATIC_DISCOVERY_RANGE and ROS_STATIC_PEERS instead.")
+        rng, statics = "LOCALHOST", []
+    elif rng == "OFF" and statics:
+        log.warning("Note: ROS_AUTOMATIC_DISCOVERY_RANGE is set to OFF, but found static peers in "
+                    "ROS_STATIC_PEERS. ROS_STATIC_PEERS will be ignored.")
+        statics = []
+    peers = [*statics, *connect]
     general = discovery = ""
     if rng in ("LOCALHOST", "OFF"):
         general = ('<Interfaces><NetworkInterface address="127.0.0.1" multicast="false"/></Interfaces>'

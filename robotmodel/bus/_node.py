@@ -50,12 +50,14 @@ def _qos(qos: QoSLike) -> QoS:
 class Context:
     """One session on one wire, shared by nodes (rclpy's context).
 
-    ``backend`` names the wire (``"zenoh"``: processes and machines; ``"ros1"``: a ROS 1
-    master and TCPROS; ``"inprocess"``: this process only; see :data:`robotmodel.bus.BACKENDS`)
-    or is an open :class:`Backend`, whose domain the context then takes. Without it the
-    environment chooses as ROS's setup does (:func:`robotmodel.bus.default_wire`: ``"ros1"`` in
-    a sourced ROS 1, else ``"zenoh"``). ``connect`` says where to meet
-    the others (zenoh endpoints instead of the loopback rendezvous; see :mod:`robotmodel.bus`).
+    ``backend`` names the wire (``"dds"`` and ``"zenoh"``: ROS 2's, processes and machines;
+    ``"ros1"``: a ROS 1 master and TCPROS; ``"inprocess"``: this process only; see
+    :data:`robotmodel.bus.BACKENDS`) or is an open :class:`Backend`, whose domain the context
+    then takes. Without it the environment chooses as ROS's setup does
+    (:func:`robotmodel.bus.default_wire`: ``"ros1"`` in a sourced ROS 1, ``"zenoh"`` with
+    ``RMW_IMPLEMENTATION=rmw_zenoh_cpp``, else ``"dds"``). ``connect`` says where to meet the
+    others (zenoh: endpoints instead of the loopback rendezvous; DDS: hosts, as
+    ROS_STATIC_PEERS; see :mod:`robotmodel.bus`).
     """
 
     def __init__(self, *, domain_id: int | None = None, connect: Sequence[str] = (),

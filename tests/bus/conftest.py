@@ -14,7 +14,7 @@ from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pytest
-from livebus import DomainLease
+from livebus import DomainLease, set_wire
 
 PEER = Path(__file__).with_name("peer.py")
 
@@ -130,17 +130,25 @@ class Procs:
 
 
 @pytest.fixture
-def bus_env(monkeypatch: pytest.MonkeyPatch) -> Iterator[dict[str, str]]:
-    """An environment with a private rendezvous port and ROS domain, also set for this process."""
+def bus_wire() -> str:
+    """The wire the processes of a test here speak (tests/bus/dds overrides it with "dds")."""
+    return "zenoh"
+
+
+@pytest.fixture
+def bus_env(monkeypatch: pytest.MonkeyPatch, bus_wire: str) -> Iterator[dict[str, str]]:
+    """An environment on ``bus_wire`` with a private rendezvous port and ROS domain, also set for this process."""
     lease = DomainLease()
-    env = dict(os.environ)
+    env = set_wire(dict(os.environ), bus_wire)
     env["ROBOTMODEL_ZENOH_PORT"] = str(free_port())
     env["ROS_DOMAIN_ID"] = str(lease.domain_id)
     env.pop("ZENOH_SESSION_CONFIG_URI", None)
     env.pop("ZENOH_CONFIG_OVERRIDE", None)
     env["PYTHONUNBUFFERED"] = "1"
-    for key in ("ROBOTMODEL_ZENOH_PORT", "ROS_DOMAIN_ID"):
+    for key in ("ROBOTMODEL_ZENOH_PORT", "ROS_DOMAIN_ID", "RMW_IMPLEMENTATION", "ROS_AUTOMATIC_DISCOVERY_RANGE"):
         monkeypatch.setenv(key, env[key])
+    for key in ("ROS_VERSION", "ROS_MASTER_URI", "ROS_STATIC_PEERS", "ROS_LOCALHOST_ONLY"):
+        monkeypatch.delenv(key, raising=False)
     monkeypatch.delenv("ZENOH_SESSION_CONFIG_URI", raising=False)
     monkeypatch.delenv("ZENOH_CONFIG_OVERRIDE", raising=False)
     try:

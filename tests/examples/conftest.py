@@ -24,4 +24,4 @@ class ExampleBus(Bus):
 @pytest.fixture
 def live(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[ExampleBus]:
     """A fresh bus; the test process joins it too (its env is set); every child is reaped."""
-    yield from joined(ExampleBus(tmp_path), monkeypatch)
+    yield from joined(ExampleBus(tmp_path, "zenoh"), monkeypatch)

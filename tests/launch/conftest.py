@@ -61,7 +61,7 @@ def pkg(tmp_path: Path) -> Package:
 @pytest.fixture
 def live(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Bus]:
     """A private bus that the test process joins too; every process started on it is reaped."""
-    yield from joined(Bus(tmp_path), monkeypatch)
+    yield from joined(Bus(tmp_path, "zenoh"), monkeypatch)
 
 
 def write_ros1(pkg: Package) -> Path:

@@ -35,7 +35,7 @@ def test_ctrl_c_while_children_import_prints_no_traceback(tmp_path: Path, pkg) -
           <node pkg="tf2_ros" type="static_transform_publisher" name="map_odom" args="1 2 0 0 0 0 map odom"/>
         </launch>
     """)
-    bus = Bus(tmp_path)
+    bus = Bus(tmp_path, "zenoh")
     # A session of its own, so the test can send SIGINT to the whole group as a terminal does.
     proc = subprocess.Popen([sys.executable, "-m", "robotmodel.cli.main", "launch", str(path)], env=bus.env,
                             cwd=tmp_path, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.PIPE,

@@ -101,4 +101,4 @@ def write(package: Path) -> Callable[[str, str], Path]:
 @pytest.fixture
 def live(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Bus]:
     """A private bus (own port and ROS_DOMAIN_ID) that the test process joins too; every child is reaped."""
-    yield from joined(Bus(tmp_path), monkeypatch)
+    yield from joined(Bus(tmp_path, "zenoh"), monkeypatch)

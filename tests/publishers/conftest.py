@@ -23,4 +23,4 @@ class PublisherBus(Bus):
 @pytest.fixture
 def live(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[PublisherBus]:
     """A fresh bus; the test process joins it too (its env is set); every child is reaped."""
-    yield from joined(PublisherBus(tmp_path), monkeypatch)
+    yield from joined(PublisherBus(tmp_path, "zenoh"), monkeypatch)

@@ -18,7 +18,7 @@ DIFFBOT = BUNDLED / "diffbot.urdf.xacro"
 
 
 def test_a_python_program_starts_the_live_viewer(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    bus = Bus(tmp_path)
+    bus = Bus(tmp_path, "zenoh")
     for key in ("ROBOTMODEL_ZENOH_PORT", "ROS_DOMAIN_ID"):
         monkeypatch.setenv(key, bus.env[key])
     monkeypatch.delenv("ZENOH_SESSION_CONFIG_URI", raising=False)

@@ -15,6 +15,14 @@ Roles:
 - ``graph NODE TOPIC``: node ``rclpy_observer`` prints ``nodes [[name, ns], ...]`` once NODE is
   listed, then ``publishers [...]`` with each publisher's node name and QoS on TOPIC.
 - ``best_effort_talker``: node ``rclpy_be`` publishes std_msgs/String best effort on /qos_probe.
+- ``describer FILE STATE``: node ``rclpy_describer`` publishes FILE's text once as std_msgs/String
+  on /robot_description (reliable, transient local, depth 1, as robot_state_publisher does) and
+  sensor_msgs/JointState STATE (JSON ``{name: position}``) on /joint_states every 50 ms.
+- ``wrong_type_talker TOPIC``: node ``rclpy_wrong`` publishes std_msgs/String on TOPIC every 50 ms.
+- ``bad_joints STATE``: node ``rclpy_bad_joints`` publishes on /joint_states every 50 ms a JointState
+  with one more name than positions (invalid), then STATE (valid), alternately.
+- ``latched_joint_listener``: node ``rclpy_tl_joints`` subscribes sensor_msgs/JointState on
+  /joint_states, reliable and transient local, and prints ``event POLICY`` per incompatible publisher.
 - ``latched_listener``: node ``rclpy_tl`` subscribes std_msgs/String on /qos_probe, reliable and
   transient local, and prints ``event POLICY`` for each incompatible publisher rclpy reports.
 """
@@ -92,6 +100,60 @@ def main(argv: list[str]) -> int:
         pub = node.create_publisher(String, "/qos_probe",
                                     QoSProfile(depth=10, reliability=ReliabilityPolicy.BEST_EFFORT))
         node.create_timer(0.05, lambda: pub.publish(String(data="be")))
+    elif role == "describer":
+        from pathlib import Path
+
+        from sensor_msgs.msg import JointState
+        from std_msgs.msg import String
+
+        path, state_json = args
+        state = json.loads(state_json)
+        node = Node("rclpy_describer")
+        latched = QoSProfile(depth=1, reliability=ReliabilityPolicy.RELIABLE,
+                             durability=DurabilityPolicy.TRANSIENT_LOCAL)
+        node.create_publisher(String, "/robot_description", latched).publish(String(data=Path(path).read_text()))
+        joints = node.create_publisher(JointState, "/joint_states", 10)
+
+        def send_state() -> None:
+            msg = JointState(name=list(state), position=[float(v) for v in state.values()])
+            msg.header.stamp = node.get_clock().now().to_msg()
+            joints.publish(msg)
+
+        node.create_timer(0.05, send_state)
+    elif role == "wrong_type_talker":
+        from std_msgs.msg import String
+
+        (topic,) = args
+        node = Node("rclpy_wrong")
+        wrong = node.create_publisher(String, topic, 10)
+        node.create_timer(0.05, lambda: wrong.publish(String(data="not a joint state")))
+    elif role == "bad_joints":
+        from sensor_msgs.msg import JointState
+
+        state = json.loads(args[0])
+        node = Node("rclpy_bad_joints")
+        joints = node.create_publisher(JointState, "/joint_states", 10)
+        flip = [False]
+
+        def send() -> None:
+            flip[0] = not flip[0]
+            if flip[0]:
+                msg = JointState(name=[*state, "extra_joint"], position=[float(v) for v in state.values()])
+            else:
+                msg = JointState(name=list(state), position=[float(v) for v in state.values()])
+            msg.header.stamp = node.get_clock().now().to_msg()
+            joints.publish(msg)
+
+        node.create_timer(0.05, send)
+    elif role == "latched_joint_listener":
+        from rclpy.event_handler import SubscriptionEventCallbacks
+        from sensor_msgs.msg import JointState
+
+        node = Node("rclpy_tl_joints")
+        qos = QoSProfile(depth=1, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+        events = SubscriptionEventCallbacks(incompatible_qos=lambda e: say("event", e.last_policy_kind.name))
+        node.create_subscription(JointState, "/joint_states", lambda m: say("got", json.dumps(list(m.name))), qos,
+                                 event_callbacks=events)
     elif role == "latched_listener":
         from rclpy.event_handler import SubscriptionEventCallbacks
         from std_msgs.msg import String

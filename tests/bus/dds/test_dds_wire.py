@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import logging
+
 import pytest
 
 from robotmodel.bus import QOS_LATCHED, QOS_TF, BusError, Context, Durability, History, Node, QoS, Reliability
@@ -67,6 +69,23 @@ def test_discovery_stays_on_loopback_unless_widened() -> None:
     assert '<Peer address="10.0.0.2"/>' in peers and '<Peer address="robot.local"/>' in peers
     with pytest.raises(BusError, match="ROS_AUTOMATIC_DISCOVERY_RANGE is 'ROOM'"):
         cyclone_config(env={"ROS_AUTOMATIC_DISCOVERY_RANGE": "ROOM"})
+
+
+def test_deprecated_localhost_only_and_off_with_peers_as_rcl_reads_them(caplog: pytest.LogCaptureFixture) -> None:
+    # rcl (Jazzy): ROS_LOCALHOST_ONLY=1 wins over the range and the static peers, with its
+    # deprecation warning; OFF ignores static peers, with its note (texts from librcl).
+    local = cyclone_config(env={})
+    widened = {"ROS_AUTOMATIC_DISCOVERY_RANGE": "SUBNET", "ROS_STATIC_PEERS": "10.0.0.2"}
+    with caplog.at_level(logging.WARNING, "robotmodel.bus"):
+        assert cyclone_config(env={**widened, "ROS_LOCALHOST_ONLY": "1"}) == local
+        assert cyclone_config(env={"ROS_AUTOMATIC_DISCOVERY_RANGE": "OFF", "ROS_STATIC_PEERS": "10.0.0.2"}) == \
+            cyclone_config(env={"ROS_AUTOMATIC_DISCOVERY_RANGE": "OFF"})
+    assert [r.getMessage() for r in caplog.records] == [
+        "ROS_LOCALHOST_ONLY is deprecated but still honored if it is enabled. "
+        "Use ROS_AUTOMATIC_DISCOVERY_RANGE and ROS_STATIC_PEERS instead.",
+        "Note: ROS_AUTOMATIC_DISCOVERY_RANGE is set to OFF, but found static peers in ROS_STATIC_PEERS. "
+        "ROS_STATIC_PEERS will be ignored."]
+    assert cyclone_config(env={**widened, "ROS_LOCALHOST_ONLY": "0"}) == cyclone_config(env=widened)
 
 
 @pytest.mark.parametrize("size", range(4, 12))
