@@ -32,10 +32,15 @@ os.environ.pop("ROS_VERSION", None)
 # A zenoh-wire tool that finds no router starts one detached, to outlive it (robotmodel.bus._router).
 # Each test process (each xdist worker) gets a runtime directory of its own, where those routers
 # leave their claims, and every router a test started is stopped after that test: none is left
-# behind, and a router of the other worker's test is never touched.
-RUNTIME_DIR = Path(tempfile.mkdtemp(prefix="robotmodel-test-run-"))
-os.environ["XDG_RUNTIME_DIR"] = str(RUNTIME_DIR)
-atexit.register(shutil.rmtree, RUNTIME_DIR, ignore_errors=True)
+# behind, and a router of the other worker's test is never touched. (Set once per process: some
+# tests import this module a second time, as `conftest`.)
+_RUN_PREFIX = f"robotmodel-test-run-{os.getpid()}-"
+if Path(os.environ.get("XDG_RUNTIME_DIR", "")).name.startswith(_RUN_PREFIX):
+    RUNTIME_DIR = Path(os.environ["XDG_RUNTIME_DIR"])
+else:
+    RUNTIME_DIR = Path(tempfile.mkdtemp(prefix=_RUN_PREFIX))
+    os.environ["XDG_RUNTIME_DIR"] = str(RUNTIME_DIR)
+    atexit.register(shutil.rmtree, RUNTIME_DIR, ignore_errors=True)
 
 
 @pytest.fixture(autouse=True)
