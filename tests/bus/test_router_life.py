@@ -54,7 +54,7 @@ def test_an_rmw_zenoh_client_keeps_its_router_and_meets_the_next_tool(procs: Any
     echo = ("topic", "echo", "/chatter", "std_msgs/msg/String", "--once")
     first = procs.run(procs.cli_args(*echo))
     wait_listening(port)  # the first tool found no router and started one
-    client = procs.run([sys.executable, str(SDK_PEER), str(port)])
+    client = procs.run([sys.executable, str(SDK_PEER), "talker", str(port)])
     client.wait_line("ready", timeout=DEADLINE_S)
     first.wait_line("data: hello", timeout=DEADLINE_S)
     assert first.popen.wait(DEADLINE_S) == 0
