@@ -58,7 +58,7 @@ def router_claim(port: int | None = None) -> Path:
     """The claim file of our router on ``port`` (default: the rendezvous port) in this network namespace."""
     try:
         # Two network namespaces each have their own port 7447, and so their own router.
-        netns = "-" + "".join(c for c in os.readlink("/proc/self/ns/net") if c.isdigit())
+        netns = "-" + "".join(c for c in str(Path("/proc/self/ns/net").readlink()) if c.isdigit())
     except OSError:
         netns = ""
     return _runtime_dir() / f"router-{rendezvous_port() if port is None else port}{netns}.pid"
