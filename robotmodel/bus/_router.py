@@ -19,7 +19,9 @@ died leaves no stale claim (the kernel drops the lock).
 from __future__ import annotations
 
 import contextlib
+import json
 import os
+import re
 import signal
 import socket
 import subprocess
@@ -28,9 +30,13 @@ import tempfile
 import time
 from collections.abc import Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from robotmodel.bus._config import rendezvous_port
 from robotmodel.errors import BusError
+
+if TYPE_CHECKING:
+    import zenoh
 
 __all__ = ["ensure_router", "router_claim", "run_router", "stop_router"]
 
@@ -49,8 +55,12 @@ def _runtime_dir() -> Path:
     path = Path(base) / "robotmodel" if base else Path(tempfile.gettempdir()) / f"robotmodel-{os.getuid()}"
     try:
         path.mkdir(mode=0o700, parents=True, exist_ok=True)
+        owner = path.stat().st_uid
     except OSError as exc:
         raise BusError(f"cannot make the router's runtime directory {path}: {exc.strerror}") from None
+    if owner != os.getuid():
+        # A shared temporary directory: another user's folder there is not ours to trust.
+        raise BusError(f"the router's runtime directory {path} belongs to another user (set XDG_RUNTIME_DIR)")
     return path
 
 
@@ -76,7 +86,10 @@ def _lock(fd: int) -> bool:
 
 def _claim(path: Path) -> int | None:
     """Lock ``path`` and write our pid into it; the open descriptor (kept until exit), or None if held."""
-    fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o600)
+    try:
+        fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o600)
+    except OSError as exc:
+        raise BusError(f"cannot open the router's claim {path}: {exc.strerror}") from None
     # Not at the first refusal: another process may be only probing it (_held) for a moment.
     if not _wait_locked(fd, 0.2):
         os.close(fd)
@@ -97,13 +110,15 @@ def run_router(listen: Sequence[str] = (), connect: Sequence[str] = ()) -> int:
     config = router_config(list(listen), list(connect))
     where = ", ".join(listen) or rendezvous_endpoint()
     # Claimed before the bind: of several routers of ours racing for one port only one tries,
-    # and `--stop` finds a router that is still starting.
-    claim_path = router_claim()
-    claim = _claim(claim_path)
-    if claim is None:
-        pid = _read_pid_of(claim_path)
-        raise BusError(f"a router of ours already runs for port {rendezvous_port()}"
-                       f"{f' (pid {pid})' if pid else ''}; `robotmodel router --stop` ends it")
+    # and `--stop` finds a router that is still starting. A router elsewhere claims nothing.
+    claim: int | None = None
+    if _serves(config, rendezvous_port()):
+        claim_path = router_claim()
+        claim = _claim(claim_path)
+        if claim is None:
+            pid = _read_pid_of(claim_path)
+            raise BusError(f"a router of ours already runs for port {rendezvous_port()}"
+                           f"{f' (pid {pid})' if pid else ''}; `robotmodel router --stop` ends it")
     try:
         try:
             session = zenoh.open(config)
@@ -116,8 +131,17 @@ def run_router(listen: Sequence[str] = (), connect: Sequence[str] = ()) -> int:
         finally:
             session.close()  # type: ignore[no-untyped-call]
     finally:
-        os.close(claim)
+        if claim is not None:
+            os.close(claim)
     return 0
+
+
+def _serves(config: zenoh.Config, port: int) -> bool:
+    """Whether ``config`` listens on ``port`` (on any address)."""
+    endpoints = json.loads(config.get_json("listen/endpoints"))
+    if isinstance(endpoints, dict):  # per mode
+        endpoints = endpoints.get("router", [])
+    return any(re.split(r"[#?]", ep)[0].rsplit(":", 1)[-1] == str(port) for ep in endpoints)
 
 
 def main() -> int:
