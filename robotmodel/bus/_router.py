@@ -44,6 +44,7 @@ __all__ = ["ensure_router", "router_claim", "run_router", "stop_router"]
 _START_TIMEOUT_S = 20.0
 _STOP_TIMEOUT_S = 10.0
 _POLL_S = 0.02
+_LOG_KEEP = 64 * 1024
 # The detached router's whole program; -c rather than -m so no second copy of this module is made.
 _DETACHED = "from robotmodel.bus._router import main; raise SystemExit(main())"
 # Routers this process started, kept so their exit status is collected (no zombie) once they end.
@@ -195,7 +196,12 @@ def _spawn(port: int, log_path: Path) -> subprocess.Popen[bytes]:
     # Those configure this process's session; applied to the router they could move it off the port.
     for key in ("ZENOH_SESSION_CONFIG_URI", "ZENOH_CONFIG_OVERRIDE"):
         env.pop(key, None)
-    with log_path.open("wb") as log_file:
+    # Appended to, never emptied while small: routers started at once share it, and the
+    # winner's start line must stay.
+    with contextlib.suppress(FileNotFoundError):
+        if log_path.stat().st_size > _LOG_KEEP:
+            log_path.unlink()
+    with log_path.open("ab") as log_file:
         # Its own session: no terminal, and a Ctrl-C or a process-group kill meant for the tool spares it.
         proc = subprocess.Popen([sys.executable, "-c", _DETACHED], stdin=subprocess.DEVNULL, stdout=log_file,
                                 stderr=subprocess.STDOUT, env=env, start_new_session=True, close_fds=True)
