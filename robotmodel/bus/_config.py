@@ -129,17 +129,11 @@ def user_session_config(connect: Sequence[str] = ()) -> zenoh.Config | None:
     return apply_override(config)
 
 
-def session_config(listen: Sequence[str], connect: Sequence[str], mode: str = "peer") -> zenoh.Config:
-    """A session config with explicit endpoints (never zenoh's all-interfaces default).
-
-    ``mode`` is "peer", or "router" for a session that routes for others.
-    """
+def session_config(listen: Sequence[str], connect: Sequence[str]) -> zenoh.Config:
+    """A peer session config with explicit endpoints (never zenoh's all-interfaces default)."""
     import zenoh
 
-    config = _common(zenoh.Config(), mode)
-    if mode == "router":
-        # As rmw_zenohd: forward between peers behind it that have no link of their own yet.
-        _insert(config, "routing/router/peers_failover_brokering", "true")
+    config = _common(zenoh.Config(), "peer")
     _insert(config, "listen/endpoints", json.dumps(_check_endpoints(listen)))
     _insert(config, "connect/endpoints", json.dumps(_check_endpoints(connect)))
     _insert(config, "connect/retry", _RETRY)

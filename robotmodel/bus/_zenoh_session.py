@@ -61,8 +61,8 @@ def open_session(connect: Sequence[str] = ()) -> zenoh.Session:
         rendezvous = rendezvous_endpoint()
         config = session_config([LOOPBACK_ANY_PORT], [rendezvous])
         if _connects_to(config, rendezvous):
-            # Nobody there: a router of its own life, as ros2cli starts its daemon (see
-            # robotmodel.bus._router); rmw_zenoh's nodes meet each other only through one.
+            # Meet at the router there; with nobody listening, start one with a life of its own,
+            # as ros2cli starts its daemon (rmw_zenoh's nodes meet each other only through one).
             ensure_router()
         return _linked(zenoh.open(config), [rendezvous])
     except zenoh.ZError as exc:
