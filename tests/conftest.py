@@ -2,8 +2,12 @@
 
 from __future__ import annotations
 
+import atexit
 import os
+import re
+import shutil
 import sysconfig
+import tempfile
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
@@ -29,6 +33,35 @@ os.environ.pop("ROS_VERSION", None)
 # and what starts outside them (an in-process Context() without a backend, a child started
 # with this environment) is on zenoh, the wire those tests were written for.
 os.environ["RMW_IMPLEMENTATION"] = "rmw_zenoh_cpp"
+
+# A zenoh-wire tool that finds no router starts one detached, to outlive it (robotmodel.bus._router).
+# Each test process (each xdist worker) gets a runtime directory of its own, where those routers
+# leave their claims, and every router a test started is stopped after that test: none is left
+# behind, and a router of the other worker's test is never touched. (Set once per process: some
+# tests import this module a second time, as `conftest`.)
+_RUN_PREFIX = f"robotmodel-test-run-{os.getpid()}-"
+if Path(os.environ.get("XDG_RUNTIME_DIR", "")).name.startswith(_RUN_PREFIX):
+    RUNTIME_DIR = Path(os.environ["XDG_RUNTIME_DIR"])
+else:
+    RUNTIME_DIR = Path(tempfile.mkdtemp(prefix=_RUN_PREFIX))
+    os.environ["XDG_RUNTIME_DIR"] = str(RUNTIME_DIR)
+    atexit.register(shutil.rmtree, RUNTIME_DIR, ignore_errors=True)
+
+
+@pytest.fixture(autouse=True)
+def _routers_stopped() -> Iterator[None]:
+    """Stop the zenoh routers this test's tools started in the background."""
+    yield
+    claims = RUNTIME_DIR / "robotmodel"
+    found = sorted(claims.glob("router-*")) if claims.is_dir() else []
+    if found:
+        from robotmodel.bus import stop_router
+
+        for port in {int(m[1]) for f in found if (m := re.match(r"router-(\d+)", f.name))}:
+            stop_router(port)
+        for f in found:
+            f.unlink(missing_ok=True)
+
 
 REPO = Path(__file__).resolve().parents[1]
 # Real robot packages for the corpus tests: $ROBOTMODEL_CORPUS, else shared/corpus beside the

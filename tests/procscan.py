@@ -7,7 +7,11 @@ from pathlib import Path
 
 
 def leftovers(port: str) -> list[str]:
-    """``pid: command line`` of every process with ``ROBOTMODEL_ZENOH_PORT=<port>`` in its environment."""
+    """``pid: command line`` of every process with ``ROBOTMODEL_ZENOH_PORT=<port>`` in its environment.
+
+    Not the zenoh router a tool started detached: it outlives the tools by design, and the
+    test's teardown stops it (tests/conftest.py).
+    """
     found = []
     needle = f"ROBOTMODEL_ZENOH_PORT={port}".encode()
     for entry in Path("/proc").iterdir():
@@ -18,7 +22,7 @@ def leftovers(port: str) -> list[str]:
             cmdline = (entry / "cmdline").read_bytes().replace(b"\0", b" ").decode(errors="replace")
         except OSError:
             continue
-        if needle in environ.split(b"\0"):
+        if needle in environ.split(b"\0") and "robotmodel.bus._router import main" not in cmdline:
             found.append(f"{entry.name}: {cmdline}")
     return found
 

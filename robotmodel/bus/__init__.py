@@ -19,10 +19,11 @@ process; :func:`default_wire` picks one from the environment as ROS does.
 
 Topology (zenoh backend): peers on 127.0.0.1 only, meeting at the well-known port 7447
 (``ROBOTMODEL_ZENOH_PORT``), or at ``connect=[...]`` endpoints, or as configured by
-``ZENOH_SESSION_CONFIG_URI``; see :mod:`robotmodel.bus._config`. ``robotmodel router``
-runs a zenoh router for machines to meet. Topology (DDS backend): discovery on loopback
-unless ``ROS_AUTOMATIC_DISCOVERY_RANGE`` or ``ROS_STATIC_PEERS`` widen it, as REP 2016 says
-(:mod:`robotmodel.bus._dds_qos`). ``ROS_DOMAIN_ID`` picks the domain.
+``ZENOH_SESSION_CONFIG_URI``; see :mod:`robotmodel.bus._config`. A session that finds no
+router there starts ``robotmodel router`` detached, once (:func:`stop_router` ends it);
+``robotmodel router`` also serves machines meeting. Topology (DDS backend): discovery on
+loopback unless ``ROS_AUTOMATIC_DISCOVERY_RANGE`` or ``ROS_STATIC_PEERS`` widen it, as REP 2016
+says (:mod:`robotmodel.bus._dds_qos`). ``ROS_DOMAIN_ID`` picks the domain.
 
 Pieces: :class:`Node` (publishers, subscriptions, graph queries, parameters),
 :class:`Context` (one session shared by nodes), :class:`Graph` and its :class:`Entity`
@@ -79,7 +80,7 @@ from robotmodel.bus._qos import (
 from robotmodel.bus._remap import RemapKind, RemapRule, parse_rules, remap_topic
 from robotmodel.bus._ros1clock import TopicClock, node_clock
 from robotmodel.bus._ros1codec import ros1_codec
-from robotmodel.bus._router import run_router
+from robotmodel.bus._router import run_router, stop_router
 from robotmodel.bus._select import default_wire
 from robotmodel.bus._zenoh_names import Token, gid_of, mangle, qos_from_keyexpr, qos_to_keyexpr, topic_keyexpr
 from robotmodel.errors import BusError
@@ -141,6 +142,7 @@ __all__ = [
     "resolve_topic",
     "ros_type_name",
     "run_router",
+    "stop_router",
     "topic_keyexpr",
     "typestore",
 ]

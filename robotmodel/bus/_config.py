@@ -2,14 +2,13 @@
 
 Topology with nothing started by hand: sessions have multicast scouting off and gossip
 on, and meet at a well-known loopback port (7447, where rmw_zenoh's router listens;
-``ROBOTMODEL_ZENOH_PORT`` changes it). The first session binds it in router mode, standing
-in for ``rmw_zenohd``: rmw_zenoh's sessions send their gossip to routers only, so behind a
-peer there they would never learn each other's endpoints, nor ours, and a peer forwards
-nothing for others. Later sessions find the port taken and connect to it as peers (a
-router there, ours or ``rmw_zenohd``, is met the same way). Each session also listens on
-an ephemeral loopback port so gossip links the peers directly; they keep talking when the
-first one exits, and they reconnect (retry every 100 ms, backing off to 1 s) to whoever
-binds the port next.
+``ROBOTMODEL_ZENOH_PORT`` changes it) as peers of the router there: ``rmw_zenohd``, or
+ours, which the first session to find the port free starts detached (see
+:mod:`robotmodel.bus._router`). A router it must be: rmw_zenoh's sessions send their gossip
+to routers only, so behind a peer they would never learn each other's endpoints, nor ours,
+and a peer forwards nothing for others. Each session also listens on an ephemeral loopback
+port so gossip links the peers directly; they reconnect (retry every 100 ms, backing off to
+1 s) to whoever binds the port next.
 
 Environment, as rmw_zenoh: ``ZENOH_SESSION_CONFIG_URI`` / ``ZENOH_ROUTER_CONFIG_URI`` name
 a zenoh JSON5 config file used instead of these defaults, and ``ZENOH_CONFIG_OVERRIDE``
@@ -130,17 +129,11 @@ def user_session_config(connect: Sequence[str] = ()) -> zenoh.Config | None:
     return apply_override(config)
 
 
-def session_config(listen: Sequence[str], connect: Sequence[str], mode: str = "peer") -> zenoh.Config:
-    """A session config with explicit endpoints (never zenoh's all-interfaces default).
-
-    ``mode`` is "peer", or "router" for the session that holds the well-known port.
-    """
+def session_config(listen: Sequence[str], connect: Sequence[str]) -> zenoh.Config:
+    """A peer session config with explicit endpoints (never zenoh's all-interfaces default)."""
     import zenoh
 
-    config = _common(zenoh.Config(), mode)
-    if mode == "router":
-        # As rmw_zenohd: forward between peers behind it that have no link of their own yet.
-        _insert(config, "routing/router/peers_failover_brokering", "true")
+    config = _common(zenoh.Config(), "peer")
     _insert(config, "listen/endpoints", json.dumps(_check_endpoints(listen)))
     _insert(config, "connect/endpoints", json.dumps(_check_endpoints(connect)))
     _insert(config, "connect/retry", _RETRY)
@@ -161,6 +154,8 @@ def router_config(listen: Sequence[str] = (), connect: Sequence[str] = ()) -> ze
         _insert(config, "listen/endpoints", json.dumps(_check_endpoints(listen or [rendezvous_endpoint()])))
         # Routers pass on gossip so the peers behind them link up directly.
         _insert(config, "routing/router/peers_failover_brokering", "true")
+        # rmw_zenohd's: open() would otherwise idle zenoh's default 500 ms scouting delay.
+        _insert(config, "scouting/delay", "1")
     else:
         _insert(config, "timestamping/enabled", "true")
         _loopback_unless_set(config, rendezvous_endpoint())

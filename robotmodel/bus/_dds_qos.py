@@ -11,7 +11,9 @@ ports of participant indices on localhost; SUBNET uses Cyclone's defaults (multi
 the machine's interface); OFF finds no one; ``ROS_STATIC_PEERS`` (``;``-separated hosts)
 are added as unicast peers. As rcl (Jazzy) reads them, the deprecated
 ``ROS_LOCALHOST_ONLY=1`` means LOCALHOST with the range and static peers ignored, and OFF
-ignores static peers, each with rcl's warning.
+ignores static peers, each with rcl's warning. With LOCALHOST a static peer beyond loopback frees
+Cyclone from the loopback interface (as in rmw_cyclonedds_cpp, which never restricts it),
+multicast staying off.
 
 Only the DDS wire uses this module (it is below the backend seam).
 """
@@ -57,6 +59,7 @@ _INFINITY = 2**63 - 1
 # rmw_cyclonedds_cpp's MaxAutoParticipantIndex for a localhost or static-peer domain.
 _MAX_PARTICIPANT_INDEX = 32
 _RANGES = ("OFF", "LOCALHOST", "SUBNET", "SYSTEM_DEFAULT")
+_LOOPBACK_PEERS = ("localhost", "127.0.0.1", "::1")
 
 
 def qos_to_dds(qos: QoS, type_hash: str = "") -> Qos:
@@ -192,8 +195,11 @@ def cyclone_config(connect: Sequence[str] = (), env: Mapping[str, str] | None = 
     peers = [*statics, *connect]
     general = discovery = ""
     if rng in ("LOCALHOST", "OFF"):
-        general = ('<Interfaces><NetworkInterface address="127.0.0.1" multicast="false"/></Interfaces>'
-                   "<AllowMulticast>false</AllowMulticast>")
+        general = "<AllowMulticast>false</AllowMulticast>"
+        # Loopback only unless a peer beyond it was named: then Cyclone's own interface, as
+        # rmw_cyclonedds_cpp leaves it, or that peer could never be reached.
+        if rng == "OFF" or not [p for p in peers if p not in _LOOPBACK_PEERS]:
+            general = '<Interfaces><NetworkInterface address="127.0.0.1" multicast="false"/></Interfaces>' + general
         if rng == "LOCALHOST":
             peers = ["localhost", *peers]
     if peers or rng in ("LOCALHOST", "OFF"):

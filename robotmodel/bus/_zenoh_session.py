@@ -14,6 +14,7 @@ QoS is mapped onto zenoh as rmw_zenoh maps it:
 from __future__ import annotations
 
 import atexit
+import json
 import logging
 import threading
 import time
@@ -33,6 +34,7 @@ from robotmodel.bus._config import (
     user_session_config,
 )
 from robotmodel.bus._qos import QoS, Reliability
+from robotmodel.bus._router import ensure_router
 from robotmodel.errors import BusError
 
 __all__ = ["RawCallback", "RawPublisher", "ZenohSession", "open_session"]
@@ -57,15 +59,20 @@ def open_session(connect: Sequence[str] = ()) -> zenoh.Session:
         if connect:
             return _linked(zenoh.open(session_config([LOOPBACK_ANY_PORT], connect)), connect)
         rendezvous = rendezvous_endpoint()
-        try:
-            # First on the machine: hold the well-known port for those who come later, as
-            # a router (see robotmodel.bus._config for why rmw_zenoh's nodes need one).
-            return zenoh.open(session_config([rendezvous, LOOPBACK_ANY_PORT], [], mode="router"))
-        except zenoh.ZError:
-            # Taken (a router, or a peer that came first): meet there.
-            return _linked(zenoh.open(session_config([LOOPBACK_ANY_PORT], [rendezvous])), [rendezvous])
+        config = session_config([LOOPBACK_ANY_PORT], [rendezvous])
+        if _connects_to(config, rendezvous):
+            # Meet at the router there; with nobody listening, start one with a life of its own,
+            # as ros2cli starts its daemon (rmw_zenoh's nodes meet each other only through one).
+            ensure_router()
+        return _linked(zenoh.open(config), [rendezvous])
     except zenoh.ZError as exc:
         raise BusError(f"cannot open a zenoh session: {exc}") from exc
+
+
+def _connects_to(config: zenoh.Config, endpoint: str) -> bool:
+    """Whether ``config`` (after ZENOH_CONFIG_OVERRIDE) still meets at ``endpoint``."""
+    endpoints = json.loads(config.get_json("connect/endpoints"))
+    return isinstance(endpoints, list) and endpoint in endpoints
 
 
 def _linked(session: zenoh.Session, endpoints: Sequence[str], timeout: float = _LINK_TIMEOUT_S) -> zenoh.Session:

@@ -143,7 +143,7 @@ class Demo:
             self.elapsed = time.monotonic() - started
             # view_frames and the screenshot end by themselves; stopped half-way, they did not fail.
             cut = {c.name for c in self.children.started if c.name in _TASKS and c.poll() is None}
-            codes = self.children.stop_all(last=("record",))
+            codes = self.children.stop_all(last=("record", "router"))
             for signum, handler in old.items():
                 signal.signal(signum, handler)
         failed = {n: c for n, c in codes.items() if c not in (0, -signal.SIGINT, 130) and n not in cut}
@@ -158,6 +158,9 @@ class Demo:
         scale = ["--time-scale", f"{self.time_scale:g}"]
         c = self.children
         mcap = self.out / "demo.mcap"
+        # The private bus's router is the demo's own child and ends with it; the first tool
+        # would otherwise start one in the background that outlives the demo.
+        self._ready(self._robotmodel("router"), r"Started Zenoh router", "router")
         record = self._robotmodel("record", "-o", str(mcap), *TOPICS)
         self._ready(record, r"Recording to", "record")
         self.files.append(("recording (MCAP)", mcap))

@@ -13,6 +13,7 @@ import zenoh
 
 from robotmodel.bus import QOS_TF, Attachment, Node, gid_of, topic_keyexpr
 from robotmodel.bus._config import rendezvous_endpoint
+from robotmodel.bus._router import router_claim
 from robotmodel.msgs import TFMessage, make_transform
 
 TF_HASH = "RIHS01_e369d0f05a23ae52508854b66f6aa0437f3449d652e8cbf22d5abe85d020f087"
@@ -141,8 +142,10 @@ def test_sessions_listen_on_loopback_only(procs: Any) -> None:
         assert addresses, "no listening socket found"
         assert all(a.startswith("0100007F:") for a in addresses), addresses  # 127.0.0.1 only
     port = int(rendezvous_endpoint().rsplit(":", 1)[1])
-    assert f"0100007F:{port:04X}" in _listening_sockets(first.popen.pid)
+    assert f"0100007F:{port:04X}" not in _listening_sockets(first.popen.pid)
     assert f"0100007F:{port:04X}" not in _listening_sockets(second.popen.pid)
+    # The rendezvous port is the router's that the first started detached: loopback only too.
+    assert _listening_sockets(int(router_claim().read_text())) == [f"0100007F:{port:04X}"]
 
 
 def test_router_command_serves_the_peers(procs: Any) -> None:

@@ -366,10 +366,10 @@ def rmw_zenoh_session(port: int) -> zenoh.Session:
 
 
 def test_rmw_zenoh_sessions_meet_ours_without_a_router(bus_env: dict[str, str]) -> None:
-    # No rmw_zenohd: our first session holds the port rmw_zenoh's sessions connect to.
-    # rmw_zenoh's sessions gossip their endpoints to routers only, and peers forward
-    # nothing for others, so unless that first session is a router as rmw_zenohd is, they
-    # never link with each other or with our later sessions, and their samples are lost.
+    # No rmw_zenohd: our first session starts a router on the port rmw_zenoh's sessions
+    # connect to. rmw_zenoh's sessions gossip their endpoints to routers only, and peers
+    # forward nothing for others, so unless a router (as rmw_zenohd) is there, they never
+    # link with each other or with our later sessions, and their samples are lost.
     domain = int(bus_env["ROS_DOMAIN_ID"])
     port = int(bus_env["ROBOTMODEL_ZENOH_PORT"])
     key = f"{domain}/chatter/std_msgs::msg::dds_::String_/{STRING_HASH}"

@@ -67,6 +67,11 @@ def test_discovery_stays_on_loopback_unless_widened() -> None:
     assert "127.0.0.1" in off and "<Peer" not in off
     peers = cyclone_config(env={"ROS_AUTOMATIC_DISCOVERY_RANGE": "SUBNET", "ROS_STATIC_PEERS": "10.0.0.2; robot.local"})
     assert '<Peer address="10.0.0.2"/>' in peers and '<Peer address="robot.local"/>' in peers
+    # REP 2016's way to reach a robot with discovery kept local: the peer must be reachable.
+    robot = cyclone_config(env={"ROS_STATIC_PEERS": "10.0.0.2"})
+    assert "127.0.0.1" not in robot and "<AllowMulticast>false" in robot
+    assert '<Peer address="localhost"/><Peer address="10.0.0.2"/>' in robot
+    assert cyclone_config(env={"ROS_STATIC_PEERS": "127.0.0.1"}).count("127.0.0.1") == 2  # interface and peer
     with pytest.raises(BusError, match="ROS_AUTOMATIC_DISCOVERY_RANGE is 'ROOM'"):
         cyclone_config(env={"ROS_AUTOMATIC_DISCOVERY_RANGE": "ROOM"})
 
