@@ -48,11 +48,21 @@ class ServiceServer:
                  request_type: Any = None, response_type: Any = None) -> None:
         self.srv_type = srv_type
         self.service_name = name
-        self._request, self._response = _codecs(node, srv_type, request_type, response_type)
         self._on_request = on_request
+        self._ready = threading.Event()
+        # Declared first: a wire without services says so before any codec is asked for.
         self.handle: Handle | None = node.handle.declare_service(name, service_type(srv_type), self._on_raw)
+        try:
+            self._request, self._response = _codecs(node, srv_type, request_type, response_type)
+        except BaseException:
+            self.close()
+            raise
+        self._ready.set()
 
     def _on_raw(self, payload: bytes, request_id: RequestId, respond_raw: Callable[[bytes], None]) -> None:
+        self._ready.wait()
+        if self.handle is None:
+            return
         try:
             request = self._request.decode(payload)
         except MessageError as exc:
@@ -84,8 +94,12 @@ class ServiceClient:
         self.srv_type = srv_type
         self.service_name = name
         self._node = node
-        self._request, self._response = _codecs(node, srv_type, request_type, response_type)
         self.handle: ClientHandle | None = node.handle.declare_client(name, service_type(srv_type))
+        try:
+            self._request, self._response = _codecs(node, srv_type, request_type, response_type)
+        except BaseException:
+            self.close()
+            raise
 
     def call_async(self, request: Any, on_response: Callable[[Any], None]) -> int:
         """Send ``request``; ``on_response(response)`` runs on the wire's thread. Returns the sequence number."""
