@@ -1,0 +1,142 @@
+"""robotmodel.rclpy's executors: when callbacks run, and whether two can run at once (in-process wire).
+
+Each case has its own context (``Context()`` passed everywhere, as rclpy allows), so no
+global state leaks between tests. Overlap is measured by the callbacks themselves: each one
+counts itself in, then waits (with a deadline) for the other to be in too; the peak count
+says whether two ever ran at once. Two publishing threads deliver at the same moment on the
+in-process wire (it delivers in the publisher's thread), which is what makes the bus's own
+callbacks overlap.
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+from collections.abc import Callable
+from typing import Any
+
+import pytest
+
+from robotmodel import rclpy
+from robotmodel.bus import Node as BusNode
+from robotmodel.msgs.std_msgs.msg import String
+from robotmodel.rclpy.callback_groups import MutuallyExclusiveCallbackGroup, ReentrantCallbackGroup
+from robotmodel.rclpy.context import Context
+from robotmodel.rclpy.executors import ExternalShutdownException, MultiThreadedExecutor, SingleThreadedExecutor
+from robotmodel.rclpy.node import Node
+
+# How long a callback waits for the other to join it: the answer when they never overlap.
+JOIN_S = 0.4
+DEADLINE_S = 20.0
+
+
+class Overlap:
+    """Callbacks that record how many of them ran at once."""
+
+    def __init__(self) -> None:
+        self._cond = threading.Condition()
+        self.active = 0
+        self.peak = 0
+        self.done = 0
+
+    def __call__(self, _msg: Any) -> None:
+        with self._cond:
+            self.active += 1
+            self.peak = max(self.peak, self.active)
+            self._cond.notify_all()
+            self._cond.wait_for(lambda: self.peak >= 2, JOIN_S)
+            self.active -= 1
+            self.done += 1
+            self._cond.notify_all()
+
+    def wait_done(self, count: int) -> None:
+        with self._cond:
+            assert self._cond.wait_for(lambda: self.done >= count, DEADLINE_S), f"{self.done} of {count} ran"
+
+
+def publish_both_at_once(node: Any) -> None:
+    """One message on /a and one on /b, from two threads released together."""
+    pubs = [node.create_publisher(String, topic, 10) for topic in ("/a", "/b")]
+    start = threading.Barrier(2)
+
+    def send(pub: Any) -> None:
+        start.wait()
+        pub.publish(String(data="x"))
+
+    threads = [threading.Thread(target=send, args=(pub,)) for pub in pubs]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+
+
+def spin_until(executor: Any, done: Callable[[], bool]) -> None:
+    end = time.monotonic() + DEADLINE_S
+    while not done():
+        assert time.monotonic() < end, "callbacks did not run"
+        executor.spin_once(timeout_sec=0.05)
+
+
+@pytest.fixture
+def context() -> Any:
+    ctx = Context()
+    ctx.init([], backend="inprocess", domain_id=61)
+    yield ctx
+    ctx.try_shutdown()
+
+
+def test_the_bus_own_callbacks_overlap(context: Context) -> None:
+    # What a program got before the rclpy stand-in: callbacks on the wire's threads, at once.
+    overlap = Overlap()
+    node = BusNode("plain", context=context.bus)
+    for topic in ("/a", "/b"):
+        node.create_subscription(String, topic, overlap, 10)
+    publish_both_at_once(node)
+    overlap.wait_done(2)
+    assert overlap.peak == 2
+
+
+def test_the_default_executor_never_runs_two_subscriptions_at_once(context: Context) -> None:
+    overlap = Overlap()
+    node = Node("listener", context=context)
+    for topic in ("/a", "/b"):
+        node.create_subscription(String, topic, overlap, 10)
+    publish_both_at_once(node)
+    assert overlap.done == 0, "a callback ran before anything spun"
+    executor = SingleThreadedExecutor(context=context)
+    executor.add_node(node)
+    spin_until(executor, lambda: overlap.done >= 2)
+    assert overlap.peak == 1
+
+
+@pytest.mark.parametrize(("group", "peak"), [(ReentrantCallbackGroup, 2), (MutuallyExclusiveCallbackGroup, 1)],
+                         ids=["reentrant", "mutually_exclusive"])
+def test_a_multithreaded_executor_overlaps_only_what_the_group_allows(context: Context, group: type,
+                                                                       peak: int) -> None:
+    overlap = Overlap()
+    node = Node("listener", context=context)
+    shared = group()
+    for topic in ("/a", "/b"):
+        node.create_subscription(String, topic, overlap, 10, callback_group=shared)
+    executor = MultiThreadedExecutor(num_threads=2, context=context)
+    executor.add_node(node)
+    publish_both_at_once(node)
+    spin_until(executor, lambda: overlap.done >= 2)
+    executor.shutdown()
+    assert overlap.peak == peak
+
+
+def test_timers_futures_and_shutdown_while_spinning(context: Context) -> None:
+    node = Node("timed", context=context)
+    ticks: list[int] = []
+    timer = node.create_timer(0.01, lambda: ticks.append(len(ticks)))
+    future = rclpy.task.Future()
+    node.create_timer(0.05, lambda: future.set_result("fired") if len(ticks) >= 3 else None)
+    executor = SingleThreadedExecutor(context=context)
+    executor.add_node(node)
+    executor.spin_until_future_complete(future, timeout_sec=DEADLINE_S)
+    assert future.result() == "fired" and len(ticks) >= 3
+    timer.cancel()
+    threading.Timer(0.05, context.try_shutdown).start()
+    with pytest.raises(ExternalShutdownException):
+        executor.spin()
