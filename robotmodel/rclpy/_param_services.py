@@ -19,7 +19,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
 from robotmodel.msgs.rcl_interfaces.msg import ListParametersResult, SetParametersResult
-from robotmodel.rclpy._msgs import service_class
+from robotmodel.msgs._dynamic import service_class
 from robotmodel.rclpy.parameter import Parameter
 from robotmodel.rclpy._params import ParameterTable
 from robotmodel.errors import RobotModelError

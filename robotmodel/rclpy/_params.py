@@ -80,7 +80,7 @@ class ParameterTable:
         result = self._apply([param], {name: descriptor})
         if not result.successful:
             raise InvalidParameterValueException(name, value, result.reason)
-        return self.get(name)
+        return param
 
     def undeclare(self, name: str) -> None:
         """Forget ``name`` (read-only ones cannot be undeclared)."""
@@ -105,7 +105,7 @@ class ParameterTable:
         if param is None:
             if self.allow_undeclared:
                 return Parameter(name, Parameter.Type.NOT_SET)
-            raise ParameterNotDeclaredException([name])
+            raise ParameterNotDeclaredException(name)
         if param.type_ == Parameter.Type.NOT_SET and descriptor is not None and descriptor.type \
                 and not descriptor.dynamic_typing:
             raise ParameterUninitializedException(name)
@@ -155,22 +155,22 @@ class ParameterTable:
         return [self.set_atomically([param]) for param in params]
 
     def _check_one(self, param: Parameter, descriptor: Any, declaring: bool = False) -> str:
+        # rclpy's checks and reasons, in its order: read-only, type, then the ranges.
         if descriptor.read_only and not declaring:
             return f"Trying to set a read-only parameter: {param.name}."
-        if descriptor.type and not descriptor.dynamic_typing and int(param.type_) != descriptor.type:
-            return (f"Wrong parameter type, parameter {{{param.name}}} is of type "
-                    f"{{{_type_text(descriptor.type)}}}, setting it to {{{_type_text(int(param.type_))}}} "
-                    "is not allowed.")
+        unset = param.type_ == Parameter.Type.NOT_SET
+        if descriptor.dynamic_typing:
+            descriptor.type = int(param.type_)
+        elif unset and not declaring and self.has(param.name):
+            return "Static parameter cannot be undeclared"
+        elif not unset and int(param.type_) != descriptor.type:
+            return (f"Wrong parameter type, expected 'Type.{Parameter.Type(descriptor.type).name}' "
+                    f"got 'Type.{param.type_.name}'")
         value = param.value
-        if descriptor.floating_point_range and param.type_ == Parameter.Type.DOUBLE:
-            r = descriptor.floating_point_range[0]
-            if not _in_float_range(float(value), r.from_value, r.to_value, r.step):
-                return (f"Parameter {{{param.name}}} doesn't comply with floating point range.")
-        if descriptor.integer_range and param.type_ == Parameter.Type.INTEGER:
-            r = descriptor.integer_range[0]
-            if not (r.from_value <= value <= r.to_value) or (r.step and (value - r.from_value) % r.step
-                                                              and value != r.to_value):
-                return f"Parameter {{{param.name}}} doesn't comply with integer range."
+        if param.type_ == Parameter.Type.INTEGER and descriptor.integer_range:
+            return _integer_range(param.name, value, descriptor.integer_range[0])
+        if param.type_ == Parameter.Type.DOUBLE and descriptor.floating_point_range:
+            return _float_range(param.name, value, descriptor.floating_point_range[0])
         return ""
 
     def _apply(self, params: list[Parameter], descriptors: Mapping[str, Any]) -> Any:
@@ -232,21 +232,30 @@ class ParameterTable:
         return names, sorted(found_prefixes)
 
 
-def _in_float_range(value: float, low: float, high: float, step: float) -> bool:
-    tolerance = 1e-6
-    if math.isclose(value, low, abs_tol=tolerance) or math.isclose(value, high, abs_tol=tolerance):
-        return True
-    if value < low or value > high:
-        return False
-    if step:
-        steps = (value - low) / step
-        return math.isclose(steps, round(steps), abs_tol=tolerance)
-    return True
+def _integer_range(name: str, value: int, r: Any) -> str:
+    low, high = min(r.from_value, r.to_value), max(r.from_value, r.to_value)
+    if value in (low, high):
+        return ""
+    if not low < value < high:
+        return f"Parameter {name} out of range. Min: {low}, Max: {high}, value: {value}"
+    if r.step and (value - low) % r.step:
+        return (f"The parameter value for {name} is not a valid step. "
+                f"Min: {low}, max: {high}, value: {value}, step: {r.step}")
+    return ""
 
 
-_TYPE_TEXT = {0: "not set", 1: "bool", 2: "integer", 3: "double", 4: "string", 5: "byte_array",
-              6: "bool_array", 7: "integer_array", 8: "double_array", 9: "string_array"}
+def _float_range(name: str, value: float, r: Any) -> str:
+    low, high = min(r.from_value, r.to_value), max(r.from_value, r.to_value)
+    if math.isclose(value, low, rel_tol=_REL_TOL) or math.isclose(value, high, rel_tol=_REL_TOL):
+        return ""
+    if not low < value < high:
+        return f"Parameter {name} out of range Min: {low}, Max: {high}, value: {value}"
+    if r.step and not math.isclose(low + round((value - low) / r.step) * r.step, value, rel_tol=_REL_TOL):
+        return (f"The parameter value for {name} is not close enough to a valid step. "
+                f"Min: {low}, max: {high}, value: {value}, step: {r.step}")
+    return ""
 
 
-def _type_text(kind: int) -> str:
-    return _TYPE_TEXT.get(kind, "unknown")
+# rclpy's Node.PARAM_REL_TOL.
+_REL_TOL = 1e-6
+

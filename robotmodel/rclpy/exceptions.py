@@ -39,8 +39,8 @@ class ParameterException(RobotModelError):
     """Base of the parameter errors (rclpy's)."""
 
     def __init__(self, error_msg: str, parameters: Any, *args: Any) -> None:
-        names = parameters if isinstance(parameters, str) else list(parameters)
-        super().__init__(f"{error_msg}: {names}", *args)
+        super().__init__(f"{error_msg}: {parameters}", *args)
+        self.parameters = parameters
 
 
 class ParameterNotDeclaredException(ParameterException):
@@ -61,15 +61,14 @@ class ParameterUninitializedException(ParameterException):
     """A statically typed parameter read before it got a value."""
 
     def __init__(self, parameter_name: str, *args: Any) -> None:
-        RobotModelError.__init__(self, f"The parameter '{parameter_name}' is not initialized", *args)
+        super().__init__(f"The parameter '{parameter_name}' is not initialized", parameter_name, *args)
 
 
 class InvalidParameterValueException(ParameterException):
     """A value a descriptor's rules or a set-parameters callback refused."""
 
     def __init__(self, parameter: str, value: Any, reason: str, *args: Any) -> None:
-        RobotModelError.__init__(self, f"Invalid parameter value ({value}) for parameter. Reason: {reason}", *args)
-        self.parameter = parameter
+        super().__init__(f"Invalid parameter value ({value}) for parameter. Reason: {reason}", parameter, *args)
         self.reason = reason
 
 
@@ -77,13 +76,13 @@ class InvalidParameterTypeException(ParameterException):
     """A value of another type than the parameter's (static typing)."""
 
     def __init__(self, desired_parameter: Any, expected_type: str, *args: Any) -> None:
-        RobotModelError.__init__(
-            self, f"Trying to set parameter '{desired_parameter.name}' to '{desired_parameter.value}' of type "
-                  f"'{desired_parameter.type_.name}', expecting type '{expected_type}'", *args)
+        super().__init__(f"Trying to set parameter '{desired_parameter.name}' to '{desired_parameter.value}' of type "
+                         f"'{desired_parameter.type_.name}', expecting type '{expected_type}'",
+                         desired_parameter.name, *args)
 
 
 class ParameterImmutableException(ParameterException):
     """A read-only parameter set after its declaration."""
 
     def __init__(self, parameter_name: str, *args: Any) -> None:
-        RobotModelError.__init__(self, f"Attempted to modify read-only parameter '{parameter_name}'", *args)
+        super().__init__(f"Attempted to modify read-only parameter '{parameter_name}'", parameter_name, *args)

@@ -261,9 +261,10 @@ class Node:
 
     def set_parameters(self, parameter_list: Sequence[Parameter]) -> list[Any]:
         """Set each; one SetParametersResult per parameter."""
-        for param in parameter_list:
-            if not self._parameters.has(param.name) and not self._parameters.allow_undeclared:
-                raise ParameterNotDeclaredException([param.name])
+        if not self._parameters.allow_undeclared and \
+                any(not self._parameters.has(param.name) for param in parameter_list):
+            # rclpy's message names no parameter here (it lists an exhausted generator).
+            raise ParameterNotDeclaredException([])
         return self._parameters.set(parameter_list)
 
     def set_parameters_atomically(self, parameter_list: Sequence[Parameter]) -> Any:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from robotmodel.rclpy._msgs import message_class
+from robotmodel.msgs._dynamic import message_class
 
 __all__ = [
     "FloatingPointRange",

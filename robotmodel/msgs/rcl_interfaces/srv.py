@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from robotmodel.rclpy._msgs import service_class
+from robotmodel.msgs._dynamic import service_class
 
 __all__ = ["DescribeParameters", "GetParameterTypes", "GetParameters", "ListParameters", "SetParameters",
            "SetParametersAtomically"]

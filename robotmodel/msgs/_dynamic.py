@@ -13,8 +13,8 @@ import dataclasses
 import threading
 from typing import Any
 
-from robotmodel.bus._codec import typestore
-from robotmodel.bus._srv import service_type
+from robotmodel.msgs._convert import typestore
+from robotmodel.msgs._srvdefs import check_service_name, register_service_types
 
 __all__ = ["message_class", "service_class"]
 
@@ -103,10 +103,11 @@ def service_class(typename: str) -> type[Any]:
         found = _services.get(typename)
         if found is not None:
             return found
-        stype = service_type(typename)
+        check_service_name(typename)
+        register_service_types(typename)
         cls = type(typename.rsplit("/", 1)[1], (), {
             "__srvtype__": typename, "__doc__": f"The service {typename}.",
-            "Request": message_class(stype.request.typename), "Response": message_class(stype.response.typename),
+            "Request": message_class(typename + "_Request"), "Response": message_class(typename + "_Response"),
         })
         cls.__module__ = __name__
         _services[typename] = cls
