@@ -35,6 +35,7 @@ from robotmodel.rclpy.node import Node
 from robotmodel.rclpy.task import Future
 
 __all__ = [
+    "InitContextManager",
     "create_node",
     "get_default_context",
     "get_global_executor",
@@ -53,16 +54,32 @@ _executor_lock = threading.Lock()
 _previous: dict[int, Any] = {}
 
 
+class InitContextManager:
+    """What :func:`init` returns: ``with rclpy.init():`` shuts the context down at the block's end."""
+
+    def __init__(self, context: Context) -> None:
+        self.context = context
+
+    def __enter__(self) -> InitContextManager:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.context.try_shutdown()
+
+
 def init(*, args: Sequence[str] | None = None, context: Context | None = None, domain_id: int | None = None,
-         signal_handler_options: Any = None, backend: str | None = None, connect: Sequence[str] = ()) -> None:
+         signal_handler_options: Any = None, backend: str | None = None,
+         connect: Sequence[str] = ()) -> InitContextManager:
     """Start the context: read ``--ros-args`` from ``args`` (default ``sys.argv``), open the wire."""
-    (context or get_default_context()).init(args, domain_id=domain_id, backend=backend, connect=connect)
+    ctx = context or get_default_context()
+    ctx.init(args, domain_id=domain_id, backend=backend, connect=connect)
     if signal_handler_options is not False and threading.current_thread() is threading.main_thread():
         for sig in (signal.SIGINT, signal.SIGTERM):
             current = signal.getsignal(sig)
             if current is not _on_signal:
                 _previous[sig] = current
                 signal.signal(sig, _on_signal)
+    return InitContextManager(ctx)
 
 
 def _on_signal(sig: int, frame: Any) -> None:
