@@ -12,21 +12,25 @@ Run: python examples/rclpy_tf2_broadcaster.py [--ros-args -p radius:=3.0]
 
 import math
 
-from robotmodel import rclpy
 from robotmodel.msgs.geometry_msgs.msg import TransformStamped
+
+from robotmodel import rclpy
 from robotmodel.rclpy.executors import ExternalShutdownException
 from robotmodel.rclpy.node import Node
 from robotmodel.tf2_ros import TransformBroadcaster
 
 
 class CarrotBroadcaster(Node):
-    def __init__(self):
+    """Sends world -> carrot from a timer."""
+
+    def __init__(self) -> None:
         super().__init__("carrot_broadcaster")
         self.declare_parameter("radius", 2.0)
         self.broadcaster = TransformBroadcaster(self)
         self.timer = self.create_timer(0.1, self.on_timer)
 
-    def on_timer(self):
+    def on_timer(self) -> None:
+        """Send the carrot where it is now."""
         now = self.get_clock().now()
         angle = now.nanoseconds / 1e9 * math.pi / 5.0
         radius = self.get_parameter("radius").value
@@ -41,7 +45,8 @@ class CarrotBroadcaster(Node):
         self.broadcaster.sendTransform(t)
 
 
-def main():
+def main() -> None:
+    """Spin the broadcaster until Ctrl-C or SIGTERM."""
     try:
         with rclpy.init():
             node = CarrotBroadcaster()

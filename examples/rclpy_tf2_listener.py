@@ -22,14 +22,17 @@ from robotmodel.tf2_ros.transform_listener import TransformListener
 
 
 class CarrotListener(Node):
-    def __init__(self):
+    """Looks up the carrot from a timer."""
+
+    def __init__(self) -> None:
         super().__init__("carrot_listener")
         self.target_frame = self.declare_parameter("target_frame", "world").value
         self.tf_buffer = Buffer()
         self.tf_listener = TransformListener(self.tf_buffer, self)
         self.timer = self.create_timer(0.5, self.on_timer)
 
-    def on_timer(self):
+    def on_timer(self) -> None:
+        """Report where the carrot is, or why it cannot be found."""
         try:
             t = self.tf_buffer.lookup_transform(self.target_frame, "carrot", Time())
         except (LookupException, ConnectivityException, ExtrapolationException) as ex:
@@ -41,7 +44,8 @@ class CarrotListener(Node):
             f"(stamp {t.header.stamp.sec}.{t.header.stamp.nanosec:09d})")
 
 
-def main():
+def main() -> None:
+    """Spin the listener until Ctrl-C or SIGTERM."""
     try:
         with rclpy.init():
             node = CarrotListener()

@@ -10,6 +10,7 @@ has ``Request`` and ``Response`` such classes and names the service in ``__srvty
 from __future__ import annotations
 
 import dataclasses
+import functools
 import threading
 from typing import Any
 
@@ -77,7 +78,8 @@ def message_class(typename: str) -> type[Any]:
             return found
         store = typestore()
         consts, fields = store.fielddefs[typename]
-        spec = [(name, Any, dataclasses.field(default_factory=lambda d=desc: _default(d))) for name, desc in fields]
+        spec = [(name, Any, dataclasses.field(default_factory=functools.partial(_default, desc)))
+                for name, desc in fields]
         rosbags_cls = store.types[typename]
 
         def to_rosbags(self: Any) -> Any:

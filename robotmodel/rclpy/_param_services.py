@@ -18,11 +18,11 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
-from robotmodel.msgs.rcl_interfaces.msg import ListParametersResult, SetParametersResult
-from robotmodel.msgs._dynamic import service_class
-from robotmodel.rclpy.parameter import Parameter
-from robotmodel.rclpy._params import ParameterTable
 from robotmodel.errors import RobotModelError
+from robotmodel.msgs._dynamic import service_class
+from robotmodel.msgs.rcl_interfaces.msg import ListParametersResult, SetParametersResult
+from robotmodel.rclpy._params import ParameterTable
+from robotmodel.rclpy.parameter import Parameter
 
 if TYPE_CHECKING:
     from robotmodel.bus import Node as BusNode

@@ -176,8 +176,8 @@ class ParameterTable:
     def _apply(self, params: list[Parameter], descriptors: Mapping[str, Any]) -> Any:
         with self._lock:
             pre, on_set, post = list(self._pre_set), list(self._on_set), list(self._post_set)
-        for hook in pre:
-            params = list(hook(params))
+        for pre_hook in pre:
+            params = list(pre_hook(params))
         for callback in on_set:
             result = callback(params)
             if not result.successful:

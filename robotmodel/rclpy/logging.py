@@ -60,7 +60,7 @@ class RcutilsLogger:
         return RcutilsLogger(f"{self.name}.{name}" if self.name else name)
 
     def set_level(self, level: LoggingSeverity | int) -> None:
-        """This logger's level."""
+        """Set the level of this logger."""
         with _lock:
             _levels[self.name] = LoggingSeverity(level)
 

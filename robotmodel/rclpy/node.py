@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import threading
 from collections.abc import Callable, Sequence
-from typing import Any
+from typing import Any, TypeVar
 
 from robotmodel.bus import Node as BusNode
 from robotmodel.rcl import logger_name, node_params, take_ros_args
@@ -28,6 +28,8 @@ from robotmodel.rclpy.parameter import Parameter
 from robotmodel.rclpy.qos import QoSProfile, to_bus_qos
 
 __all__ = ["Node"]
+
+E = TypeVar("E")
 
 
 class Node:
@@ -116,7 +118,7 @@ class Node:
             if entity in self._entities:
                 self._entities.remove(entity)
 
-    def _add(self, entity: Any) -> Any:
+    def _add(self, entity: E) -> E:
         with self._lock:
             self._entities.append(entity)
         self._notify()

@@ -23,6 +23,7 @@ from robotmodel.rclpy.parameter import Parameter
 from robotmodel.rclpy.task import Future
 
 if TYPE_CHECKING:
+    from robotmodel.rclpy._entities import Client
     from robotmodel.rclpy.node import Node
 
 __all__ = ["AsyncParameterClient"]
@@ -38,7 +39,7 @@ class AsyncParameterClient:
             node.get_namespace().rstrip("/") + "/" + remote_node_name
         self.remote_node_name = remote_node_name
 
-        def client(srv: Any, suffix: str) -> Any:
+        def client(srv: Any, suffix: str) -> Client:
             return node.create_client(srv, f"{base}/{suffix}", callback_group=callback_group)
 
         self._list = client(ListParameters, "list_parameters")

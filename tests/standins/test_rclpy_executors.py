@@ -19,7 +19,7 @@ import pytest
 
 from robotmodel import rclpy
 from robotmodel.bus import Node as BusNode
-from robotmodel.msgs.std_msgs.msg import String
+from robotmodel.msgs import String
 from robotmodel.rclpy.callback_groups import MutuallyExclusiveCallbackGroup, ReentrantCallbackGroup
 from robotmodel.rclpy.context import Context
 from robotmodel.rclpy.executors import ExternalShutdownException, MultiThreadedExecutor, SingleThreadedExecutor
