@@ -10,9 +10,14 @@ and each client keeps the replies carrying its own id (every client of a service
 every reply). The client id is made from its request writer's GUID.
 
 rmw_fastrtps_cpp carries the request id out of band instead (the RTPS inline QoS
-``PID_RELATED_SAMPLE_IDENTITY``), which Cyclone 11.0.1 can neither write nor show to a
-reader: services between this wire and Fast DDS do not interoperate, as between
-rmw_cyclonedds_cpp and rmw_fastrtps_cpp (ros2/rmw_cyclonedds#184).
+``PID_RELATED_SAMPLE_IDENTITY``) and writes the bare message, which Cyclone 11.0.1 can
+neither write nor show to a reader: as between rmw_cyclonedds_cpp and rmw_fastrtps_cpp
+(ros2/rmw_cyclonedds#184), a Fast DDS client gets no reply from this wire (it drops a
+reply that names no request). A service here still takes Fast DDS's requests (a second
+reader of the bare type keeps the samples of writers whose GUID's vendor id is not
+Cyclone's, 01.10; the request id is the writer's GUID and its count of requests), so a
+Fast DDS ``ros2 param set`` takes effect although the client waits in vain for its answer.
+A client here cannot call a Fast DDS service.
 
 Only the DDS wire uses this module (it is below the backend seam).
 """
@@ -67,34 +72,72 @@ def _client_id(gid: bytes) -> int:
     return int.from_bytes(gid[:8], "little") ^ int.from_bytes(gid[8:], "little")
 
 
+#: The vendor id Cyclone DDS puts at the start of its GUIDs (RTPS 2.5, 9.3.1.5: Eclipse 01.10).
+CYCLONE_VENDOR = b"\x01\x10"
+ForeignCallback = Callable[[bytes, bytes, int], None]
+
+
 class _Pair:
-    """A reader on one of a service's topics and a writer on the other, with a pump for the reader."""
+    """A reader on one of a service's topics and a writer on the other, with a pump for the reader.
+
+    With ``on_foreign``, a second reader of the bare type takes other vendors' samples
+    (``on_foreign(payload, writer GUID, its count)``); each reader keeps only its vendors'.
+    """
 
     def __init__(self, node: DdsNode, name: str, read: tuple[str, str], write: tuple[str, str],
-                 on_data: Callable[[bytes], None], type_hash: str) -> None:
+                 on_data: Callable[[bytes], None], type_hash: str, on_foreign: ForeignCallback | None = None) -> None:
         backend = node.backend
         self._node = node
         self.name = name
         self._on_data = on_data
+        self._on_foreign = on_foreign
         self._write_typename = write[1]
         self._reader: Any = None
+        self._foreign: Any = None
+        self._writers: dict[tuple[int, int], bytes] = {}
+        self._counts: dict[bytes, int] = {}
         self._pump = Pump(f"dds-srv {name}", self._drain)
         self._listener = self._pump.listener()
         qos = qos_to_dds(SERVICES_QOS, type_hash)
         self._writer: Any = DataWriter(backend.participant, backend.dds_topic(write[0], write[1], True), qos)
+        self._idle: Any = None
         self._reader = DataReader(backend.participant, backend.dds_topic(read[0], read[1], True), qos,
                                   listener=self._listener)
+        if on_foreign is not None:
+            self._foreign = DataReader(backend.participant, backend.dds_topic(read[0], read[1]), qos,
+                                       listener=self._listener)
+            # rmw_fastrtps_cpp finds a server available only when the request readers and reply
+            # writers it discovers are as many: a bare-typed writer that never writes evens them.
+            self._idle = DataWriter(backend.participant, backend.dds_topic(write[0], write[1]), qos)
         self.reader_gid: bytes = self._reader.guid.bytes
         self.writer_gid: bytes = self._writer.guid.bytes
         self._lock = threading.Lock()
         self._pump.poke()
 
+    def _writer_of(self, reader: Any, handle: int) -> bytes:
+        key = (id(reader), handle)
+        gid = self._writers.get(key)
+        if gid is None:
+            data = reader.get_matched_publication_data(handle)
+            gid = data.key.bytes if data is not None else b""
+            self._writers[key] = gid
+        return gid
+
     def _drain(self) -> None:
-        while (reader := self._reader) is not None and (batch := take_raw(reader)):
-            for data, info in batch:
-                if info.valid_data:
+        for reader, foreign in ((self._reader, False), (self._foreign, True)):
+            while reader is not None and self._reader is not None and (batch := take_raw(reader)):
+                for data, info in batch:
+                    if not info.valid_data:
+                        continue
+                    gid = self._writer_of(reader, info.publication_handle)
+                    if (gid[:2] != CYCLONE_VENDOR) != foreign:
+                        continue  # the other reader's vendor: that reader reads it in its own form
                     try:
-                        self._on_data(data)
+                        if foreign and self._on_foreign is not None:
+                            count = self._counts[gid] = self._counts.get(gid, 0) + 1
+                            self._on_foreign(data, gid, count)
+                        elif not foreign:
+                            self._on_data(data)
                     except Exception:  # one bad callback must not stop the service
                         log.exception("service '%s' failed on a sample", self.name)
 
@@ -113,12 +156,17 @@ class _Pair:
 
     def close(self) -> None:
         reader, self._reader = self._reader, None
+        foreign, self._foreign = self._foreign, None
+        idle, self._idle = self._idle, None
         with self._lock:
             writer, self._writer = self._writer, None
         if reader is None:
             return
         self._pump.close()
         destroy(reader)
+        for extra in (foreign, idle):
+            if extra is not None:
+                destroy(extra)
         if writer is not None:
             destroy(writer)
         self._node.forget_pair(self, self.reader_gid, self.writer_gid)  # type: ignore[arg-type]
@@ -129,8 +177,10 @@ class DdsService(Handle):
 
     def __init__(self, node: DdsNode, name: str, stype: ServiceType, on_request: RequestCallback) -> None:
         self._on_request = on_request
+        self._warned = False
         self.pair = _Pair(node, name, (request_topic_name(name), stype.request.typename),
-                          (reply_topic_name(name), stype.response.typename), self._on_data, stype.type_hash)
+                          (reply_topic_name(name), stype.response.typename), self._on_data, stype.type_hash,
+                          self._on_foreign)
         self.reader_gid = self.pair.reader_gid
         self.writer_gid = self.pair.writer_gid
 
@@ -147,6 +197,16 @@ class DdsService(Handle):
                 self.pair.write(add_header(response, guid, seq))
 
         self._on_request(payload, RequestId(guid.to_bytes(8, "little") + bytes(8), seq), respond)
+
+    def _on_foreign(self, payload: bytes, writer: bytes, count: int) -> None:
+        def respond(_response: bytes) -> None:
+            if not self._warned:
+                self._warned = True
+                log.warning("service '%s' cannot answer a request from another DDS vendor's client "
+                            "(writer %s): Cyclone DDS cannot send the request id rmw_fastrtps_cpp needs",
+                            self.pair.name, writer.hex())
+
+        self._on_request(payload, RequestId(writer, count), respond)
 
     def close(self) -> None:
         """Delete the service's reader and writer."""

@@ -111,8 +111,12 @@ def _field_type(desc: tuple[Any, Any], owner: str) -> Any:
 def idl_type(typename: str, request_header: bool = False) -> type[IdlStruct]:
     """The Cyclone topic type of a ROS message type (``pkg/msg/Name``), built once; raises BusError.
 
-    ``request_header``: a service request or reply as rmw_cyclonedds_cpp writes it, the
-    client's 64-bit id and the request's sequence number before the message's own fields.
+    ``request_header``: a service request or reply as rmw_cyclonedds_cpp writes it: the
+    client's 64-bit id and the request's sequence number, then the message. The type holds
+    the header alone: Cyclone reads the message after it as trailing bytes and checks it
+    no further (the codecs above do), so such a reader also takes another vendor's bare
+    request without failing on it, which would keep Cyclone from giving that sample to the
+    bare-typed reader that wants it (:mod:`._dds_service`).
     """
     key = typename + ("+header" if request_header else "")
     with _lock:
@@ -129,7 +133,7 @@ def idl_type(typename: str, request_header: bool = False) -> type[IdlStruct]:
             # rosidl gives an empty message one member, so its IDL struct is not empty.
             members = {"structure_needs_at_least_one_member": t.uint8}
         if request_header:
-            members = {"rmw_request_guid": t.uint64, "rmw_request_seq": t.int64, **members}
+            members = {"rmw_request_guid": t.uint64, "rmw_request_seq": t.int64}
         cls: type[IdlStruct] = make_idl_struct(dds_name.replace("::", "_") + ("_h" if request_header else ""),
                                                dds_name, members)
         _cache[key] = cls
