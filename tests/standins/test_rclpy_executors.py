@@ -140,3 +140,25 @@ def test_timers_futures_and_shutdown_while_spinning(context: Context) -> None:
     threading.Timer(0.05, context.try_shutdown).start()
     with pytest.raises(ExternalShutdownException):
         executor.spin()
+
+
+def test_use_sim_time_makes_the_clock_and_timers_follow_clock(context: Context) -> None:
+    from robotmodel.msgs import stamp
+    from robotmodel.msgs.rosgraph_msgs import Clock as ClockMsg
+    from robotmodel.rclpy.parameter import Parameter
+
+    node = Node("simulated", context=context, parameter_overrides=[Parameter("use_sim_time", value=True)])
+    assert node.get_parameter("use_sim_time").value is True and node.get_clock().ros_time_is_active
+    clock = node.bus_node.create_publisher(ClockMsg, "/clock", 10)
+    fired: list[int] = []
+    node.create_timer(1.0, lambda: fired.append(node.get_clock().now().nanoseconds))
+    executor = SingleThreadedExecutor(context=context)
+    executor.add_node(node)
+    for seconds in (100, 100.5, 101, 101.5, 102):
+        clock.publish(ClockMsg(clock=stamp(int(seconds * 1e9))))
+        executor.spin_once(timeout_sec=0.05)
+    # Made at ROS time 0, the 1 s timer is overdue at the first /clock (100 s) and fires then, then at
+    # 101 and 102, on /clock's time: what Jazzy's rclpy does with the same steps (run in .venv-rclpy).
+    assert fired == [100_000_000_000, 101_000_000_000, 102_000_000_000]
+    node.set_parameters([Parameter("use_sim_time", value=False)])
+    assert abs(node.get_clock().now().nanoseconds - time.time_ns()) < 5e9
