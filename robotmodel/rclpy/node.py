@@ -15,6 +15,7 @@ from collections.abc import Callable, Sequence
 from typing import Any, TypeVar
 
 from robotmodel.bus import Node as BusNode
+from robotmodel.errors import BusError
 from robotmodel.rcl import logger_name, node_params, take_ros_args
 from robotmodel.rclpy._entities import Client, Publisher, Rate, Service, Subscription, Timer
 from robotmodel.rclpy._param_services import serve_parameters
@@ -69,8 +70,12 @@ class Node:
             for key, value in overrides.items():
                 if not self.has_parameter(key):
                     self.declare_parameter(key, value)
-        self._param_servers = (serve_parameters(self.bus_node, self._parameters, self._dispatch)
-                               if start_parameter_services else [])
+        self._param_servers: list[Any] = []
+        if start_parameter_services:
+            try:
+                self._param_servers = serve_parameters(self.bus_node, self._parameters, self._dispatch)
+            except BusError:
+                pass  # a wire without ROS 2 services (ROS 1): the parameters stay node-local
         self._context.on_shutdown(self.destroy_node)
 
     # -- identity --------------------------------------------------------------------------------

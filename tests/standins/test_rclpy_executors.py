@@ -162,3 +162,27 @@ def test_use_sim_time_makes_the_clock_and_timers_follow_clock(context: Context) 
     assert fired == [100_000_000_000, 101_000_000_000, 102_000_000_000]
     node.set_parameters([Parameter("use_sim_time", value=False)])
     assert abs(node.get_clock().now().nanoseconds - time.time_ns()) < 5e9
+
+
+def test_the_stand_in_on_a_real_ros1_master(ros1: Any, monkeypatch: pytest.MonkeyPatch) -> None:
+    # The ROS 1 wire has no ROS 2 services: the node keeps its parameters to itself and works.
+    for key in ("ROS_MASTER_URI", "ROS_HOSTNAME", "ROS_HOME"):
+        monkeypatch.setenv(key, ros1.env[key])
+    ctx = Context()
+    ctx.init([], backend="ros1")
+    try:
+        node = Node("rclpy_on_ros1", context=ctx)
+        assert node.declare_parameter("gain", 0.5).value == 0.5
+        got: list[str] = []
+        node.create_subscription(String, "/chatter", lambda m: got.append(m.data), 10)
+        pub = node.create_publisher(String, "/chatter", 10)
+        executor = SingleThreadedExecutor(context=ctx)
+        executor.add_node(node)
+        end = time.monotonic() + DEADLINE_S
+        while not got:
+            assert time.monotonic() < end, "nothing arrived over TCPROS"
+            pub.publish(String(data="over TCPROS"))
+            executor.spin_once(timeout_sec=0.1)
+        assert got[0] == "over TCPROS"
+    finally:
+        ctx.try_shutdown()
