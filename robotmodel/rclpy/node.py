@@ -10,6 +10,7 @@ true, its clock follows ``/clock``. It serves the ROS 2 parameter services (unle
 
 from __future__ import annotations
 
+import contextlib
 import threading
 from collections.abc import Callable, Sequence
 from typing import Any, TypeVar
@@ -72,10 +73,9 @@ class Node:
                     self.declare_parameter(key, value)
         self._param_servers: list[Any] = []
         if start_parameter_services:
-            try:
+            # A wire without ROS 2 services (ROS 1) refuses them: the parameters stay node-local.
+            with contextlib.suppress(BusError):
                 self._param_servers = serve_parameters(self.bus_node, self._parameters, self._dispatch)
-            except BusError:
-                pass  # a wire without ROS 2 services (ROS 1): the parameters stay node-local
         self._context.on_shutdown(self.destroy_node)
 
     # -- identity --------------------------------------------------------------------------------
