@@ -47,13 +47,16 @@ class CarrotBroadcaster(Node):
 
 def main() -> None:
     """Spin the broadcaster until Ctrl-C or SIGTERM."""
+    rclpy.init()
+    node = CarrotBroadcaster()
+    node.get_logger().info(f"broadcasting carrot at radius {node.get_parameter('radius').value}")
     try:
-        with rclpy.init():
-            node = CarrotBroadcaster()
-            node.get_logger().info(f"broadcasting carrot at radius {node.get_parameter('radius').value}")
-            rclpy.spin(node)
+        rclpy.spin(node)
     except (KeyboardInterrupt, ExternalShutdownException):
         pass
+    finally:
+        node.destroy_node()
+        rclpy.try_shutdown()
 
 
 if __name__ == "__main__":

@@ -46,12 +46,15 @@ class CarrotListener(Node):
 
 def main() -> None:
     """Spin the listener until Ctrl-C or SIGTERM."""
+    rclpy.init()
+    node = CarrotListener()
     try:
-        with rclpy.init():
-            node = CarrotListener()
-            rclpy.spin(node)
+        rclpy.spin(node)
     except (KeyboardInterrupt, ExternalShutdownException):
         pass
+    finally:
+        node.destroy_node()
+        rclpy.try_shutdown()
 
 
 if __name__ == "__main__":

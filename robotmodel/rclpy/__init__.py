@@ -30,7 +30,6 @@ from typing import Any
 
 from robotmodel.rclpy.context import Context, get_default_context
 from robotmodel.rclpy.executors import Executor, SingleThreadedExecutor
-from robotmodel.rclpy.logging import get_logger
 from robotmodel.rclpy.node import Node
 from robotmodel.rclpy.task import Future
 
@@ -39,7 +38,6 @@ __all__ = [
     "create_node",
     "get_default_context",
     "get_global_executor",
-    "get_logger",
     "init",
     "ok",
     "shutdown",
@@ -55,7 +53,10 @@ _previous: dict[int, Any] = {}
 
 
 class InitContextManager:
-    """What :func:`init` returns: ``with rclpy.init():`` shuts the context down at the block's end."""
+    """What :func:`init` returns: ``with rclpy.init():`` shuts the context down at the block's end.
+
+    Newer rclpy's form (Kilted); Jazzy's init returns None, and code written for it ignores this.
+    """
 
     def __init__(self, context: Context) -> None:
         self.context = context

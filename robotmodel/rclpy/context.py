@@ -17,7 +17,7 @@ from robotmodel.bus import Context as BusContext
 from robotmodel.rcl import RosArgs, take_ros_args
 from robotmodel.rclpy.exceptions import NotInitializedException
 
-__all__ = ["Context", "get_default_context"]
+__all__ = ["Context"]
 
 
 class Context:
