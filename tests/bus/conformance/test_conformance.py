@@ -16,6 +16,7 @@ from collections.abc import Callable
 from typing import Any
 
 import pytest
+from bus.conformance.conftest import WIRES
 
 from robotmodel.bus import (
     QOS_TF,
@@ -415,3 +416,13 @@ def test_service_requests_get_their_own_responses(wire: Any) -> None:
     assert ids == sorted([(seq_a, 16), (seq_b, 16)]) and held[0][2].client_gid != held[1][2].client_gid
     server.close()
     until(lambda: not a.service_is_ready(), wire.spec.graph_deadline_s, "client sees the server gone")
+
+
+@pytest.mark.parametrize("wire", [w for w in WIRES if w.services], ids=lambda w: w.name, indirect=True)
+def test_a_service_elsewhere_answers(wire: Any) -> None:
+    # Wires with processes put the server in a child process: requests and replies cross the wire.
+    wire.peer("adder", "/conformance/remote_add")
+    types = typestore().types
+    client = Node("caller", context=wire.context()).create_client(ADD, "/conformance/remote_add")
+    assert client.wait_for_service(wire.spec.graph_deadline_s)
+    assert client.call(types[ADD + "_Request"](a=20, b=22), timeout=DELIVERY_S).sum == 42
