@@ -4,8 +4,9 @@ Six services under the node's name, as rclcpp and rclpy offer them:
 ``~/describe_parameters``, ``~/get_parameter_types``, ``~/get_parameters``,
 ``~/list_parameters``, ``~/set_parameters``, ``~/set_parameters_atomically``, of the
 rcl_interfaces types, so ``ros2 param`` and rclpy's ``AsyncParameterClient`` read and
-change the node's parameters. Answers follow rclpy's: ``get_parameters`` answers no values
-when a name is undeclared, ``describe_parameters`` no descriptors; a set that raises (an
+change the node's parameters. Answers follow rclpy's: ``get_parameters``, ``get_parameter_types``
+and ``describe_parameters`` answer nothing when a name is undeclared; ``list_parameters``
+names them in declaration order; a set that raises (an
 undeclared name) answers "unsuccessful" with the error's text.
 
 ``dispatch(job)`` decides where each request is handled: an rclpy stand-in node hands it to
@@ -53,10 +54,10 @@ def _handlers(table: ParameterTable) -> dict[str, Callable[[Any, Any], None]]:
             resp.descriptors = []
 
     def types(req: Any, resp: Any) -> None:
-        out = []
-        for name in req.names:
-            out.append(int(table.get(name).type_) if table.has(name) else 0)
-        resp.types = out
+        try:
+            resp.types = [int(table.get(name).type_) for name in req.names]
+        except RobotModelError:
+            resp.types = []
 
     def get(req: Any, resp: Any) -> None:
         try:

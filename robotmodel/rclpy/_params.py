@@ -112,9 +112,9 @@ class ParameterTable:
         return param
 
     def names(self) -> list[str]:
-        """Every declared name, sorted."""
+        """Every declared name, in declaration order (as rclpy lists them)."""
         with self._lock:
-            return sorted(self._params)
+            return list(self._params)
 
     def descriptor(self, name: str) -> Any:
         """The descriptor of a declared parameter."""

@@ -17,6 +17,7 @@ from typing import Any, TypeVar
 
 from robotmodel.bus import Node as BusNode
 from robotmodel.errors import BusError
+from robotmodel.msgs.rcl_interfaces.msg import ParameterDescriptor
 from robotmodel.rcl import logger_name, node_params, take_ros_args
 from robotmodel.rclpy._entities import Client, Publisher, Rate, Service, Subscription, Timer
 from robotmodel.rclpy._param_services import serve_parameters
@@ -67,6 +68,9 @@ class Node:
         self._clock_sub: Any = None
         self._parameters.add_post_set(self._follow_sim_time)
         self.declare_parameter("use_sim_time", False)
+        # Declared by every Jazzy node; robotmodel serves no ~/get_type_description, whatever its value.
+        self.declare_parameter("start_type_description_service", True, ParameterDescriptor(
+            description="If enabled, start the ~/get_type_description service.", read_only=True))
         if automatically_declare_parameters_from_overrides:
             for key, value in overrides.items():
                 if not self.has_parameter(key):
