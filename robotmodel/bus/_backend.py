@@ -84,8 +84,9 @@ Parameters. :meth:`NodeHandle.parameters` is the node's parameter store
 in-process and zenoh wires keep a node-local store (:class:`LocalParameters`), as rclpy
 keeps parameters in the node; ROS 2's parameter services are served above the seam, over
 :meth:`NodeHandle.declare_service` (:mod:`robotmodel.rclpy`). A ROS 1 wire answers with the
-master's parameter server: names resolved against the node's namespace (``~name`` private), ``search`` up the namespace as ROS 1's
-searchParam does, and set/delete visible to every node.
+master's parameter server: names resolved against the node's namespace (``~name``
+private), ``search`` up the namespace as ROS 1's searchParam does, and set/delete visible
+to every node.
 
 Services. :meth:`NodeHandle.declare_service` (fully qualified name, :class:`ServiceType`,
 ``on_request``) serves requests: the wire calls ``on_request(payload, request_id, respond)``
