@@ -151,7 +151,7 @@ class RobotStatePublisher:
         from robotmodel.rclpy._param_services import serve_parameters
         from robotmodel.rclpy._params import ParameterTable
 
-        table = ParameterTable()
+        table = ParameterTable(rclcpp=True)
         table.declare("robot_description", self.description_text)
         table.declare("publish_frequency", float(self.logic.publish_frequency))
         table.declare("ignore_timestamp", bool(self.logic.ignore_timestamp))

@@ -43,8 +43,11 @@ def _python_value(value: Any) -> Any:
 class ParameterTable:
     """One node's parameters (see the module docstring); thread-safe."""
 
-    def __init__(self, overrides: Mapping[str, Any] | None = None, allow_undeclared: bool = False) -> None:
+    def __init__(self, overrides: Mapping[str, Any] | None = None, allow_undeclared: bool = False,
+                 rclcpp: bool = False) -> None:
         self.overrides = {k: _python_value(v) for k, v in (overrides or {}).items()}
+        # A C++ node's (robot_state_publisher's) refusal of a wrong type reads as rclcpp's.
+        self.rclcpp = rclcpp
         self.allow_undeclared = allow_undeclared
         self._params: dict[str, Parameter] = {}
         self._descriptors: dict[str, Any] = {}
@@ -164,6 +167,10 @@ class ParameterTable:
         elif unset and not declaring and self.has(param.name):
             return "Static parameter cannot be undeclared"
         elif not unset and int(param.type_) != descriptor.type:
+            if self.rclcpp:
+                return (f"Wrong parameter type, parameter {{{param.name}}} is of type "
+                        f"{{{_RCLCPP_TYPES[descriptor.type]}}}, setting it to "
+                        f"{{{_RCLCPP_TYPES[int(param.type_)]}}} is not allowed.")
             return (f"Wrong parameter type, expected 'Type.{Parameter.Type(descriptor.type).name}' "
                     f"got 'Type.{param.type_.name}'")
         value = param.value
@@ -256,6 +263,9 @@ def _float_range(name: str, value: float, r: Any) -> str:
     return ""
 
 
+# rclcpp's names of the parameter types (rclcpp::to_string(ParameterType)).
+_RCLCPP_TYPES = ["not set", "bool", "integer", "double", "string", "byte_array", "bool_array", "integer_array",
+                 "double_array", "string_array"]
 # rclpy's Node.PARAM_REL_TOL.
 _REL_TOL = 1e-6
 
