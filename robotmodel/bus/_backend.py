@@ -82,10 +82,26 @@ cleanup``); the ROS 1 wire keeps them as its master does (it prunes nothing).
 Parameters. :meth:`NodeHandle.parameters` is the node's parameter store
 (:class:`ParameterStore`: get/set/has/delete/names, names as the node sees them). The
 in-process and zenoh wires keep a node-local store (:class:`LocalParameters`), as rclpy
-keeps parameters in the node; ROS 2's parameter services on top of it belong to the node
-layer (issue 21). A ROS 1 wire answers with the master's parameter server: names resolved
-against the node's namespace (``~name`` private), ``search`` up the namespace as ROS 1's
-searchParam does, and set/delete visible to every node.
+keeps parameters in the node; ROS 2's parameter services are served above the seam, over
+:meth:`NodeHandle.declare_service` (:mod:`robotmodel.rclpy`). A ROS 1 wire answers with the
+master's parameter server: names resolved against the node's namespace (``~name``
+private), ``search`` up the namespace as ROS 1's searchParam does, and set/delete visible
+to every node.
+
+Services. :meth:`NodeHandle.declare_service` (fully qualified name, :class:`ServiceType`,
+``on_request``) serves requests: the wire calls ``on_request(payload, request_id, respond)``
+on a thread of its own for each request, and ``respond(payload)`` (from any thread, at any
+time later, at most once) sends the response to the client that asked. A
+:class:`ClientHandle` from :meth:`NodeHandle.declare_client` sends requests
+(``request(payload, on_response)``, returning the request's sequence number, from 1 per
+client) and calls ``on_response(payload)`` once with the response to that request and to no
+other; ``server_ready()`` says whether a server of the name and type is known. Services and
+clients are in the graph (:attr:`EntityKind.SERVICE`, :attr:`EntityKind.CLIENT`, ``topic``
+being the service name). Each wire carries the request id as its ROS 2 does: in-process
+directly; zenoh as rmw_zenoh (a queryable on the service's key, the request's attachment
+naming the client's GID and sequence number); DDS as rmw_cyclonedds_cpp (``rq/<name>Request``
+and ``rr/<name>Reply`` topics, each payload starting with the client's 64-bit id and the
+sequence number). The ROS 1 wire has none here (:class:`robotmodel.errors.BusError`).
 
 Nothing above this module imports a wire's module (``tests/bus/test_seam.py`` checks it);
 the wires import only this module and the shared ROS vocabulary (:mod:`._qos`,
@@ -110,6 +126,7 @@ __all__ = [
     "CDR",
     "ROS1",
     "Backend",
+    "ClientHandle",
     "Entity",
     "EntityKind",
     "GraphCallback",
@@ -121,9 +138,14 @@ __all__ = [
     "PublisherHandle",
     "QoSEvent",
     "QoSEventCallback",
+    "RequestCallback",
+    "RequestId",
+    "Responder",
+    "ResponseCallback",
     "Sample",
     "SampleCallback",
     "SampleInfo",
+    "ServiceType",
     "open_backend",
 ]
 
@@ -140,6 +162,23 @@ class MessageType:
     type_hash: str = ""
     md5sum: str = ""
     definition: str = ""
+
+
+@dataclass(frozen=True, slots=True)
+class ServiceType:
+    """A service type as the wires name it: ``pkg/srv/Name``, its two messages and its RIHS01 hash."""
+
+    typename: str
+    request: MessageType
+    response: MessageType
+    type_hash: str = ""
+
+
+class RequestId(NamedTuple):
+    """Who asked (the client's 16-byte GID) and which of its requests (from 1): rmw's request id."""
+
+    client_gid: bytes
+    sequence_number: int
 
 
 class SampleInfo(NamedTuple):
@@ -211,6 +250,9 @@ class QoSEvent(NamedTuple):
 
 
 SampleCallback = Callable[[Sample], None]
+Responder = Callable[[bytes], None]
+RequestCallback = Callable[[bytes, RequestId, Responder], None]
+ResponseCallback = Callable[[bytes], None]
 QoSEventCallback = Callable[[QoSEvent], None]
 GraphCallback = Callable[[str, "Entity | None"], None]
 
@@ -238,6 +280,23 @@ class PublisherHandle(Handle):
     @abstractmethod
     def matched(self) -> bool:
         """Whether a compatible subscription is known to receive its samples now."""
+
+
+class ClientHandle(Handle):
+    """A declared service client (see the module docstring's Services)."""
+
+    @property
+    @abstractmethod
+    def gid(self) -> bytes:
+        """The client's 16-byte id, as its requests' ids carry it."""
+
+    @abstractmethod
+    def request(self, payload: bytes, on_response: ResponseCallback) -> int:
+        """Send one request; ``on_response(payload)`` gets its response. Returns its sequence number."""
+
+    @abstractmethod
+    def server_ready(self) -> bool:
+        """Whether a server of this service is known now."""
 
 
 class ParameterStore(ABC):
@@ -317,6 +376,14 @@ class NodeHandle(Handle):
     @abstractmethod
     def parameters(self) -> ParameterStore:
         """The node's parameter store."""
+
+    def declare_service(self, name: str, stype: ServiceType, on_request: RequestCallback) -> Handle:
+        """Serve ``name``: ``on_request(payload, request_id, respond)`` for each request."""
+        raise BusError(f"cannot serve '{name}': this wire has no ROS 2 services")
+
+    def declare_client(self, name: str, stype: ServiceType) -> ClientHandle:
+        """A client of the service ``name``."""
+        raise BusError(f"cannot call '{name}': this wire has no ROS 2 services")
 
 
 class Backend(ABC):

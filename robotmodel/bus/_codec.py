@@ -262,10 +262,11 @@ def _codec_for_class(cls: type, typename: str) -> Codec:
         return RosbagsCodec(typename)
     if cls is TFRecords:
         return _TFRecordsCodec()
-    if cls.__module__.startswith("robotmodel.msgs"):
-        return MsgsCodec(cls)
     to_ros = getattr(cls, "to_rosbags", None)
     from_ros = getattr(cls, "from_rosbags", None)
+    # A class bringing its own rosbags conversion uses it (robotmodel.msgs' classes built from the typestore).
+    if cls.__module__.startswith("robotmodel.msgs") and (to_ros is None or from_ros is None):
+        return MsgsCodec(cls)
     if to_ros is None or from_ros is None:
         raise BusError(f"message class {cls.__qualname__} ({typename}) has no rosbags conversion")
     return RosbagsCodec(typename, to_ros, from_ros)

@@ -20,7 +20,7 @@ Discovery stays on this machine unless ``ROS_AUTOMATIC_DISCOVERY_RANGE`` or
 ``ROS_STATIC_PEERS`` widen it (:func:`._dds_qos.cyclone_config`); Cyclone reads that
 configuration when the first session of a domain in this process opens, and lets it go
 with the last one.
-Parameters are node-local.
+Parameters are node-local. Services are rmw_cyclonedds_cpp's (:mod:`._dds_service`).
 """
 
 from __future__ import annotations
@@ -28,7 +28,7 @@ from __future__ import annotations
 import logging
 import threading
 from collections.abc import Callable, Sequence
-from typing import Any
+from typing import Any, cast
 
 from cyclonedds.core import DDSException, Policy, Qos
 from cyclonedds.domain import Domain, DomainParticipant
@@ -39,6 +39,7 @@ from cyclonedds.topic import Topic
 from robotmodel.bus._backend import (
     CDR,
     Backend,
+    ClientHandle,
     Entity,
     GraphCallback,
     Handle,
@@ -49,9 +50,11 @@ from robotmodel.bus._backend import (
     PublisherHandle,
     QoSEvent,
     QoSEventCallback,
+    RequestCallback,
     Sample,
     SampleCallback,
     SampleInfo,
+    ServiceType,
 )
 from robotmodel.bus._dds_graph import DdsGraph, LocalNode
 from robotmodel.bus._dds_qos import POLICY_NAMES, check_peers, cyclone_config, qos_to_dds
@@ -175,11 +178,15 @@ class DdsBackend(Backend):
 
     def topic(self, topic: str, typename: str) -> Any:
         """The DDS topic of a ROS topic and type in this participant (made once)."""
+        return self.dds_topic(dds_topic_name(topic), typename)
+
+    def dds_topic(self, dds_name: str, typename: str, request_header: bool = False) -> Any:
+        """The DDS topic ``dds_name`` of a ROS type (with rmw_cyclonedds' request header: services)."""
         with self._lock:
-            found = self._topics.get((topic, typename))
+            found = self._topics.get((dds_name, typename))
             if found is None:
-                found = self._topics[(topic, typename)] = Topic(self.participant, dds_topic_name(topic),
-                                                                idl_type(typename))
+                found = self._topics[(dds_name, typename)] = Topic(self.participant, dds_name,
+                                                                   idl_type(typename, request_header))
             return found
 
     def create_node(self, name: str, namespace: str, enclave: str = "/") -> DdsNode:
@@ -283,6 +290,41 @@ class DdsNode(NodeHandle):
     def parameters(self) -> ParameterStore:
         """See :meth:`NodeHandle.parameters` (node-local)."""
         return self._params
+
+    def declare_service(self, name: str, stype: ServiceType, on_request: RequestCallback) -> Handle:
+        """See :meth:`NodeHandle.declare_service` (rmw_cyclonedds_cpp's request/reply topics)."""
+        from robotmodel.bus._dds_service import DdsService
+
+        return self._adopt(DdsService(self, name, stype, on_request))
+
+    def declare_client(self, name: str, stype: ServiceType) -> ClientHandle:
+        """See :meth:`NodeHandle.declare_client`."""
+        from robotmodel.bus._dds_service import DdsClient
+
+        client = DdsClient(self, name, stype)
+        self._adopt(client)
+        return client
+
+    def _adopt(self, endpoint: Any) -> Handle:
+        # A service's or client's reader and writer are the node's in ros_discovery_info, as rmw lists them.
+        self._children.append(endpoint)
+        with self.backend.graph.lock:
+            self.record.readers.append(endpoint.reader_gid)
+            self.record.writers.append(endpoint.writer_gid)
+        self.backend.graph.publish()
+        return cast(Handle, endpoint)
+
+    def forget_pair(self, child: Handle, reader_gid: bytes, writer_gid: bytes) -> None:
+        """A service or client closed: take its reader and writer out of the node's announcement."""
+        with self.backend.graph.lock:
+            if reader_gid in self.record.readers:
+                self.record.readers.remove(reader_gid)
+            if writer_gid in self.record.writers:
+                self.record.writers.remove(writer_gid)
+        if child in self._children:
+            self._children.remove(child)
+        if not self._closed:
+            self.backend.graph.publish()
 
     def close(self) -> None:
         """Close the node's endpoints, then withdraw it from ros_discovery_info."""

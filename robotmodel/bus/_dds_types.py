@@ -29,11 +29,23 @@ __all__ = [
     "TOPIC_PREFIX",
     "dds_topic_name",
     "idl_type",
+    "reply_topic_name",
+    "request_topic_name",
     "ros_topic_name",
 ]
 
 #: rmw's prefix for ROS topics on DDS (``rq``/``rr`` are services' request and reply).
 TOPIC_PREFIX = "rt"
+
+
+def request_topic_name(service: str) -> str:
+    """``/add`` -> ``rq/addRequest``, the DDS topic a service's requests go on."""
+    return "rq" + service + "Request"
+
+
+def reply_topic_name(service: str) -> str:
+    """``/add`` -> ``rr/addReply``, the DDS topic a service's replies go on."""
+    return "rr" + service + "Reply"
 
 _BASE: dict[str, Any] = {
     "bool": bool,
@@ -96,10 +108,19 @@ def _field_type(desc: tuple[Any, Any], owner: str) -> Any:
     raise BusError(f"message type '{owner}': unknown field kind {kind!r}")
 
 
-def idl_type(typename: str) -> type[IdlStruct]:
-    """The Cyclone topic type of a ROS message type (``pkg/msg/Name``), built once; raises BusError."""
+def idl_type(typename: str, request_header: bool = False) -> type[IdlStruct]:
+    """The Cyclone topic type of a ROS message type (``pkg/msg/Name``), built once; raises BusError.
+
+    ``request_header``: a service request or reply as rmw_cyclonedds_cpp writes it: the
+    client's 64-bit id and the request's sequence number, then the message. The type holds
+    the header alone: Cyclone reads the message after it as trailing bytes and checks it
+    no further (the codecs above do), so such a reader also takes another vendor's bare
+    request without failing on it, which would keep Cyclone from giving that sample to the
+    bare-typed reader that wants it (:mod:`._dds_service`).
+    """
+    key = typename + ("+header" if request_header else "")
     with _lock:
-        found = _cache.get(typename)
+        found = _cache.get(key)
         if found is not None:
             return found
         store = _store()
@@ -111,7 +132,10 @@ def idl_type(typename: str) -> type[IdlStruct]:
         if not members:
             # rosidl gives an empty message one member, so its IDL struct is not empty.
             members = {"structure_needs_at_least_one_member": t.uint8}
-        cls: type[IdlStruct] = make_idl_struct(dds_name.replace("::", "_"), dds_name, members)
-        _cache[typename] = cls
+        if request_header:
+            members = {"rmw_request_guid": t.uint64, "rmw_request_seq": t.int64}
+        cls: type[IdlStruct] = make_idl_struct(dds_name.replace("::", "_") + ("_h" if request_header else ""),
+                                               dds_name, members)
+        _cache[key] = cls
         return cls
 

@@ -6,6 +6,8 @@ incompatible-QoS event and exchange nothing); transient-local publishers keep th
 ``depth`` samples for transient-local subscriptions that come later. Each sample is
 delivered synchronously in the publishing thread, one at a time per subscription.
 Closing a session withdraws its nodes from the graph (what a killed process is here).
+A request goes to the first server of the name and type in the domain, synchronously in the
+requesting thread; its response goes to the client whenever the server responds.
 """
 
 from __future__ import annotations
@@ -20,6 +22,7 @@ from collections.abc import Callable, Sequence
 from robotmodel.bus._backend import (
     CDR,
     Backend,
+    ClientHandle,
     Entity,
     EntityKind,
     GraphCallback,
@@ -31,9 +34,13 @@ from robotmodel.bus._backend import (
     PublisherHandle,
     QoSEvent,
     QoSEventCallback,
+    RequestCallback,
+    RequestId,
+    ResponseCallback,
     Sample,
     SampleCallback,
     SampleInfo,
+    ServiceType,
 )
 from robotmodel.bus._qos import QoS, incompatible_policy
 from robotmodel.errors import BusError
@@ -100,6 +107,7 @@ class _LocalBus:
         self.lock = threading.RLock()
         self.pubs: list[_Pub] = []
         self.subs: list[_Sub] = []
+        self.services: list[tuple[int, str, str, RequestCallback]] = []
         self.entities: dict[tuple[int, str], Entity] = {}
         self.watchers: list[tuple[int, GraphCallback]] = []
 
@@ -306,6 +314,37 @@ class _LocalNode(NodeHandle):
         """See :meth:`NodeHandle.parameters` (node-local)."""
         return self._params
 
+    def _service_entity(self, kind: EntityKind, name: str, stype: ServiceType, gid: bytes) -> Entity:
+        n = self.entity
+        return Entity(kind, n.node_name, n.namespace, n.enclave, name, stype.typename, stype.type_hash,
+                      None, gid, self.key)
+
+    def declare_service(self, name: str, stype: ServiceType, on_request: RequestCallback) -> Handle:
+        """See :meth:`NodeHandle.declare_service`."""
+        backend, bus = self.backend, self.backend._bus
+        entry = (backend.domain_id, name, stype.typename, on_request)
+        key = backend.next_key()
+        with bus.lock:
+            bus.services.append(entry)
+            bus.announce(backend.domain_id, key,
+                         self._service_entity(EntityKind.SERVICE, name, stype, secrets.token_bytes(16)))
+
+        def remove() -> None:
+            with bus.lock:
+                if entry in bus.services:
+                    bus.services.remove(entry)
+                bus.announce(backend.domain_id, key, None)
+
+        handle = _Closer(remove)
+        self._children.append(handle)
+        return handle
+
+    def declare_client(self, name: str, stype: ServiceType) -> ClientHandle:
+        """See :meth:`NodeHandle.declare_client`."""
+        client = _LocalClient(self, name, stype)
+        self._children.append(client)
+        return client
+
     def close(self) -> None:
         """Withdraw the node's endpoints, then the node."""
         if self._closed:
@@ -361,3 +400,57 @@ class _LocalPublisher(PublisherHandle):
         pub, self._pub = self._pub, None
         if pub is not None:
             self._remove()
+
+
+class _LocalClient(ClientHandle):
+    def __init__(self, node: _LocalNode, name: str, stype: ServiceType) -> None:
+        backend = node.backend
+        self._bus = backend._bus
+        self._domain = backend.domain_id
+        self._name = name
+        self._typename = stype.typename
+        self._gid = secrets.token_bytes(16)
+        self._seq = itertools.count(1)
+        self._key = backend.next_key()
+        self._open = True
+        self._bus.announce(self._domain, self._key,
+                           node._service_entity(EntityKind.CLIENT, name, stype, self._gid))
+
+    @property
+    def gid(self) -> bytes:
+        """See :attr:`ClientHandle.gid`."""
+        return self._gid
+
+    def _server(self) -> RequestCallback | None:
+        with self._bus.lock:
+            for domain, name, typename, on_request in self._bus.services:
+                if (domain, name, typename) == (self._domain, self._name, self._typename):
+                    return on_request
+        return None
+
+    def request(self, payload: bytes, on_response: ResponseCallback) -> int:
+        """See :meth:`ClientHandle.request` (no server: the request is lost, as on a real wire)."""
+        if not self._open:
+            raise BusError(f"client of '{self._name}' is closed")
+        seq = next(self._seq)
+        server = self._server()
+        answered = threading.Event()
+
+        def respond(response: bytes) -> None:
+            if self._open and not answered.is_set():
+                answered.set()
+                on_response(bytes(response))
+
+        if server is not None:
+            server(bytes(payload), RequestId(self._gid, seq), respond)
+        return seq
+
+    def server_ready(self) -> bool:
+        """See :meth:`ClientHandle.server_ready`."""
+        return self._server() is not None
+
+    def close(self) -> None:
+        """Withdraw the client; responses still to come are dropped."""
+        if self._open:
+            self._open = False
+            self._bus.announce(self._domain, self._key, None)

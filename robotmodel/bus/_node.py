@@ -20,6 +20,7 @@ from robotmodel.bus._backend import (
     ParameterStore,
     PublisherHandle,
     QoSEvent,
+    RequestId,
     Sample,
     SampleInfo,
     open_backend,
@@ -32,6 +33,7 @@ from robotmodel.bus._qos import QOS_DEFAULT, QoS
 from robotmodel.bus._remap import RemapRule, node_name_of, node_namespace_of, parse_rules, remap_topic
 from robotmodel.bus._ros1remaps import RemapWatch
 from robotmodel.bus._select import default_wire
+from robotmodel.bus._service import Respond, ServiceClient, ServiceServer
 from robotmodel.bus._warn import Warner
 from robotmodel.errors import BusError, MessageError
 
@@ -291,7 +293,7 @@ class Node:
         self._owns_context = context is None
         self.context = context if context is not None else Context(
             domain_id=domain_id, connect=connect, backend=backend)
-        self._children: list[Publisher[Any] | Subscription[Any]] = []
+        self._children: list[Publisher[Any] | Subscription[Any] | ServiceServer | ServiceClient] = []
         try:
             self.handle: NodeHandle = self.context.backend.create_node(self.name, self.namespace, self.enclave)
         except BaseException:
@@ -359,6 +361,27 @@ class Node:
                                                      callback, True)
         self._children.append(sub)
         return sub
+
+    def create_service(self, srv_type: str, name: str, on_request: Callable[[Any, Respond, RequestId], None], *,
+                       request_type: Any = None, response_type: Any = None) -> ServiceServer:
+        """Serve ``srv_type`` (``pkg/srv/Name``) as ``name``: ``on_request(request, respond, request_id)``."""
+        self._check_open()
+        server = ServiceServer(self, srv_type, self.resolve_service_name(name), on_request, request_type,
+                               response_type)
+        self._children.append(server)
+        return server
+
+    def create_client(self, srv_type: str, name: str, *, request_type: Any = None,
+                      response_type: Any = None) -> ServiceClient:
+        """A client of the service ``name`` of ``srv_type``."""
+        self._check_open()
+        client = ServiceClient(self, srv_type, self.resolve_service_name(name), request_type, response_type)
+        self._children.append(client)
+        return client
+
+    def resolve_service_name(self, name: str) -> str:
+        """The fully qualified service name (expanded and remapped as a topic name, as rcl does)."""
+        return self.resolve_topic_name(name)
 
     def _check_open(self) -> None:
         if self._closed:

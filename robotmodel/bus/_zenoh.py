@@ -6,7 +6,7 @@ every node, publisher and subscription declares a liveliness token (:class:`Toke
 which every session builds the graph. Node and entity ids come from one counter per session,
 as rmw_zenoh numbers them. As in rmw_zenoh, any publisher and subscription of one topic and
 type match whatever their QoS (zenoh's keys carry no QoS), so no incompatible-QoS event is
-ever raised. Parameters are node-local.
+ever raised. Parameters are node-local. Services are rmw_zenoh's queryables (:mod:`._zenoh_service`).
 """
 
 from __future__ import annotations
@@ -28,6 +28,7 @@ from robotmodel.bus._attachment import (
 from robotmodel.bus._backend import (
     CDR,
     Backend,
+    ClientHandle,
     EntityKind,
     GraphCallback,
     Handle,
@@ -37,9 +38,11 @@ from robotmodel.bus._backend import (
     ParameterStore,
     PublisherHandle,
     QoSEventCallback,
+    RequestCallback,
     Sample,
     SampleCallback,
     SampleInfo,
+    ServiceType,
 )
 from robotmodel.bus._names import ros_type_name
 from robotmodel.bus._qos import QoS
@@ -160,6 +163,22 @@ class ZenohNode(NodeHandle):
     def parameters(self) -> ParameterStore:
         """See :meth:`NodeHandle.parameters` (node-local)."""
         return self._params
+
+    def declare_service(self, name: str, stype: ServiceType, on_request: RequestCallback) -> Handle:
+        """See :meth:`NodeHandle.declare_service` (rmw_zenoh's queryable; :mod:`._zenoh_service`)."""
+        from robotmodel.bus._zenoh_service import ZenohService
+
+        service = ZenohService(self, name, stype, on_request)
+        self._children.append(service)
+        return service
+
+    def declare_client(self, name: str, stype: ServiceType) -> ClientHandle:
+        """See :meth:`NodeHandle.declare_client`."""
+        from robotmodel.bus._zenoh_service import ZenohClient
+
+        client = ZenohClient(self, name, stype)
+        self._children.append(client)
+        return client
 
     def close(self) -> None:
         """Undeclare the node's endpoints, then its token."""

@@ -208,7 +208,8 @@ def run_robot_state_publisher(file: str | None = None, mappings: Mapping[str, st
     stop = stop_on_signals()
     # RSP's topics are relative (joint_states, robot_description): they follow the namespace; /tf does not.
     with Node(name, namespace, connect=list(connect), remappings=ros.remaps) as node, RobotStatePublisher(
-            desc, bus=node, logger=log, **settings):
+            desc, bus=node, logger=log, **settings) as rsp:
+        rsp.serve_parameters()  # ros2 param get/set, as ROS 2's robot_state_publisher
         stop.wait()
     return 0
 

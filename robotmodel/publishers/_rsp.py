@@ -139,6 +139,50 @@ class RobotStatePublisher:
             self.logic.setup(description)
             self._publish_setup()
 
+    def serve_parameters(self) -> Any:
+        """Serve ROS 2's parameter services for RSP's parameters, as robot_state_publisher does.
+
+        ``robot_description`` (string), ``publish_frequency`` (double), ``ignore_timestamp``
+        (bool), ``frame_prefix`` (string) and ``use_sim_time`` (bool), with their current
+        values; ``ros2 param set`` or an rclpy parameter client changes them: a new
+        ``robot_description`` is parsed and, when valid, republished with the fixed
+        transforms (an invalid one is refused with the parse error, the robot kept), as
+        RSP's parameter callback does. Returns the :class:`robotmodel.rclpy._params.ParameterTable`.
+        The services run on the bus's threads (RSP has no executor here).
+        """
+        from robotmodel.errors import RobotModelError
+        from robotmodel.msgs.rcl_interfaces.msg import SetParametersResult
+        from robotmodel.rclpy._param_services import serve_parameters
+        from robotmodel.rclpy._params import ParameterTable
+
+        table = ParameterTable(rclcpp=True)
+        table.declare("robot_description", self.description_text)
+        table.declare("publish_frequency", float(self.logic.publish_frequency))
+        table.declare("ignore_timestamp", bool(self.logic.ignore_timestamp))
+        table.declare("frame_prefix", self.frame_prefix)
+        table.declare("use_sim_time", False)
+
+        def on_set(params: list[Any]) -> Any:
+            for param in params:
+                try:
+                    if param.name == "robot_description":
+                        self.set_description(str(param.value))
+                    elif param.name == "publish_frequency":
+                        with self._lock:
+                            self.logic.publish_frequency = float(param.value)
+                    elif param.name == "frame_prefix":
+                        self.frame_prefix = str(param.value)
+                    elif param.name == "ignore_timestamp":
+                        with self._lock:
+                            self.logic.ignore_timestamp = bool(param.value)
+                except RobotModelError as exc:
+                    return SetParametersResult(successful=False, reason=str(exc))
+            return SetParametersResult(successful=True)
+
+        table.add_on_set(on_set)
+        self._param_servers = serve_parameters(self.node, table)
+        return table
+
     @property
     def description_text(self) -> str:
         """The text published on /robot_description."""
@@ -161,6 +205,8 @@ class RobotStatePublisher:
             if self._closed:
                 return
             self._closed = True
+        for server in getattr(self, "_param_servers", []):
+            server.close()
         for name in ("_sub", "_tf_pub", "_tf_static", "_description_pub"):
             handle = getattr(self, name, None)
             if handle is not None:

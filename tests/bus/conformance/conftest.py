@@ -47,6 +47,8 @@ class WireSpec:
     latches_last_only: bool = False
     # Topics every node of the wire has besides its own (ROS 1: /rosout).
     implicit_topics: tuple[str, ...] = ()
+    # Whether the wire carries ROS 2 services (request/reply) through the seam.
+    services: bool = True
 
 
 WIRES = [
@@ -59,7 +61,7 @@ WIRES = [
              graph_deadline_s=30.0),
     WireSpec("ros1", processes=True, qos_rules="none", parameters="server", volatile_gets_latched=True,
              graph_deadline_s=30.0, killed_peer_leaves=False, endpoint_qos=False, latches_last_only=True,
-             implicit_topics=("/rosout",)),
+             implicit_topics=("/rosout",), services=False),
 ]
 
 

@@ -16,6 +16,7 @@ from collections.abc import Callable
 from typing import Any
 
 import pytest
+from bus.conformance.conftest import WIRES
 
 from robotmodel.bus import (
     QOS_TF,
@@ -31,6 +32,7 @@ from robotmodel.bus import (
     incompatible_policy,
     typestore,
 )
+from robotmodel.errors import BusError
 from robotmodel.msgs import TFMessage
 
 STRING = "std_msgs/msg/String"
@@ -376,3 +378,51 @@ def test_closing_a_session_withdraws_all_it_declared(wire: Any) -> None:
     assert graph.wait_for(lambda es: any(e.node_name == "short" for e in es), wire.spec.graph_deadline_s)
     ctx.close()
     assert graph.wait_for(lambda es: not [e for e in es if e.node_name == "short"], wire.spec.graph_deadline_s)
+
+
+# --- services -----------------------------------------------------------------------------
+
+ADD = "example_interfaces/srv/AddTwoInts"
+
+
+def test_service_requests_get_their_own_responses(wire: Any) -> None:
+    if not wire.spec.services:
+        with pytest.raises(BusError, match="no ROS 2 services"):
+            Node("server", context=wire.context()).create_service(ADD, "add", lambda *_: None)
+        return
+    types = typestore().types
+    server_node = Node("server", "/conformance", context=wire.context())
+    held: list[Any] = []
+
+    def on_request(request: Any, respond: Any, request_id: Any) -> None:
+        # Answer out of order: the second request first, from another thread, as executors do.
+        held.append((request, respond, request_id))
+        if len(held) == 2:
+            for req, resp, _rid in reversed(held):
+                threading.Thread(target=resp, args=(types[ADD + "_Response"](sum=req.a + req.b),)).start()
+
+    client_node = Node("client", context=wire.context())
+    a = client_node.create_client(ADD, "/conformance/add")
+    b = Node("client2", context=wire.context()).create_client(ADD, "/conformance/add")
+    assert not a.service_is_ready()
+    server = server_node.create_service(ADD, "add", on_request)  # relative: /conformance/add
+    assert a.wait_for_service(wire.spec.graph_deadline_s) and b.wait_for_service(wire.spec.graph_deadline_s)
+    got_a, got_b = Inbox(), Inbox()
+    seq_a = a.call_async(types[ADD + "_Request"](a=1, b=2), got_a)
+    seq_b = b.call_async(types[ADD + "_Request"](a=40, b=2), got_b)
+    assert [r.sum for r in got_a.wait(lambda items: len(items) == 1, what="first response")] == [3]
+    assert [r.sum for r in got_b.wait(lambda items: len(items) == 1, what="second response")] == [42]
+    ids = sorted((rid.sequence_number, len(rid.client_gid)) for _req, _resp, rid in held)
+    assert ids == sorted([(seq_a, 16), (seq_b, 16)]) and held[0][2].client_gid != held[1][2].client_gid
+    server.close()
+    until(lambda: not a.service_is_ready(), wire.spec.graph_deadline_s, "client sees the server gone")
+
+
+@pytest.mark.parametrize("wire", [w for w in WIRES if w.services], ids=lambda w: w.name, indirect=True)
+def test_a_service_elsewhere_answers(wire: Any) -> None:
+    # Wires with processes put the server in a child process: requests and replies cross the wire.
+    wire.peer("adder", "/conformance/remote_add")
+    types = typestore().types
+    client = Node("caller", context=wire.context()).create_client(ADD, "/conformance/remote_add")
+    assert client.wait_for_service(wire.spec.graph_deadline_s)
+    assert client.call(types[ADD + "_Request"](a=20, b=22), timeout=DELIVERY_S).sum == 42

@@ -11,6 +11,7 @@ Roles:
   on TOPIC, reliable transient local with DEPTH.
 - ``talker NAME NAMESPACE``: node NAME in NAMESPACE with a best-effort keep-last 7 publisher of
   std_msgs/String on ``chatter`` (relative) and a tf2_ros listener-QoS subscription on ``/tf``.
+- ``adder SERVICE``: node ``adder`` serves example_interfaces/srv/AddTwoInts as SERVICE (sum = a + b).
 """
 
 from __future__ import annotations
@@ -23,6 +24,7 @@ from robotmodel.bus import QOS_TF, Context, Durability, Node, QoS, Reliability, 
 
 STRING = "std_msgs/msg/String"
 TF = "tf2_msgs/msg/TFMessage"
+ADD = "example_interfaces/srv/AddTwoInts"
 
 
 def latched(ctx: Context, topic: str, count: str, depth: str) -> list[Any]:
@@ -41,7 +43,17 @@ def talker(ctx: Context, name: str, namespace: str) -> list[Any]:
     return [node, pub, sub]
 
 
-ROLES: dict[str, Callable[..., list[Any]]] = {"latched": latched, "talker": talker}
+def adder(ctx: Context, service: str) -> list[Any]:
+    node = Node("adder", context=ctx)
+
+    def add(request: Any, respond: Callable[[Any], None], _request_id: Any) -> None:
+        respond(typestore().types[ADD + "_Response"](sum=request.a + request.b))
+
+    server = node.create_service(ADD, service, add)
+    return [node, server]
+
+
+ROLES: dict[str, Callable[..., list[Any]]] = {"latched": latched, "talker": talker, "adder": adder}
 
 
 def main(argv: list[str]) -> int:

@@ -1,0 +1,1 @@
+"""example_interfaces: ``from robotmodel.msgs.example_interfaces.srv import AddTwoInts``."""

@@ -1,0 +1,1 @@
+"""rcl_interfaces: ``from robotmodel.msgs.rcl_interfaces.msg import ParameterDescriptor`` (and ``.srv``)."""

@@ -1,0 +1,1 @@
+"""std_srvs: ``from robotmodel.msgs.std_srvs.srv import Trigger``."""
