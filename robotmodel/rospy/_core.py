@@ -23,7 +23,7 @@ import time
 from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any
 
-from robotmodel.errors import ROSInitException, ROSInterruptException, ROSTimeMovedBackwardsException
+from robotmodel.errors import ROSException, ROSInitException, ROSInterruptException, ROSTimeMovedBackwardsException
 from robotmodel.rospy import _log, _time
 from robotmodel.rospy._time import Duration, Time, get_rostime
 
@@ -39,6 +39,7 @@ class _State:
 
     def __init__(self) -> None:
         self.node: Node | None = None
+        self.init_args: tuple[Any, ...] = ()
         self.name = "/unnamed"
         self.namespace = "/"
         self.shutdown = threading.Event()
@@ -102,13 +103,19 @@ def init_node(name: str, argv: Sequence[str] | None = None, anonymous: bool = Fa
     ``ROS_NAMESPACE`` sets the namespace. ``/use_sim_time`` true (on wires without a parameter
     server: ``_use_sim_time:=true``) makes the node follow ``/clock``; log lines go to
     ``/rosout`` unless ``disable_rosout``. ``bus_options`` (robotmodel's, e.g. ``backend``,
-    ``domain_id``) go to :class:`robotmodel.bus.Node`.
+    ``domain_id``) go to :class:`robotmodel.bus.Node`. Called again with the same arguments
+    (``bus_options`` aside) it does nothing, with others it raises ROSException, as rospy.
     """
     del xmlrpc_port, tcpros_port
     from robotmodel.bus import Node
 
+    args = (name, argv, anonymous, log_level, disable_rostime, disable_signals)
     if _state.node is not None:
-        raise ROSInitException(f"rospy.init_node() has already been called with different arguments: {_state.name}")
+        # As rospy: the same call again is a no-op (so a harness may open the node first, on a
+        # wire of its choosing, and then run a program that calls init_node as usual).
+        if args == _state.init_args:
+            return
+        raise ROSException(f"rospy.init_node() has already been called with different arguments: {_state.init_args}")
     if "/" in name:
         raise ValueError("namespaces are not allowed in node names")
     words = list(sys.argv if argv is None else argv)
@@ -138,6 +145,7 @@ def init_node(name: str, argv: Sequence[str] | None = None, anonymous: bool = Fa
     node = Node(name, namespace, remappings=remaps, **bus_options)
     with _state.lock:
         _state.node = node
+        _state.init_args = args
         _state.name = node.fully_qualified_name
         _state.namespace = node.namespace
     store = node.parameters
