@@ -1,7 +1,9 @@
 """rospy's Time and Duration: seconds and nanoseconds (``secs``/``nsecs``), genpy's arithmetic; the ROS clock.
 
 Both also carry ``sec``/``nanosec`` and ``nanoseconds``, so they go into robotmodel's
-messages (``t.header.stamp = rospy.Time.now()``) and its tf2 buffer as they are.
+messages (``t.header.stamp = rospy.Time.now()``) and its tf2 buffer as they are; the other
+way, a received stamp message takes part in their arithmetic and comparisons
+(``rospy.Time.now() - msg.header.stamp``).
 
 The ROS clock is the wall clock unless the node follows ``/clock`` (``/use_sim_time`` true
 at init_node, as rospy): then :func:`get_rostime` is the last ``/clock`` received, zero
@@ -98,11 +100,13 @@ class _TVal:
         return f"rospy.{type(self).__name__}[{self._ns}]"
 
     def _cmp(self, other: Any) -> int:
+        other = _coerce(other)
         if type(other) is not type(self):
             raise TypeError(f"cannot compare {type(self).__name__} to {type(other).__name__}")
         return int(other._ns)
 
     def __eq__(self, other: object) -> bool:
+        other = _coerce(other)
         return type(other) is type(self) and other._ns == self._ns
 
     def __lt__(self, other: Any) -> bool:
@@ -130,6 +134,7 @@ class Duration(_TVal):
         return Duration._of(abs(self._ns))
 
     def __add__(self, other: Any) -> Any:
+        other = _coerce(other)
         if isinstance(other, Time):
             return Time._of(self._ns + other._ns)
         if isinstance(other, Duration):
@@ -139,6 +144,7 @@ class Duration(_TVal):
     __radd__ = __add__
 
     def __sub__(self, other: Any) -> Duration:
+        other = _coerce(other)
         if isinstance(other, Duration):
             return Duration._of(self._ns - other._ns)
         return NotImplemented
@@ -181,6 +187,7 @@ class Time(_TVal):
         return get_rostime()
 
     def __add__(self, other: Any) -> Time:
+        other = _coerce(other)
         if isinstance(other, Duration):
             return Time._of(self._ns + other._ns)
         return NotImplemented
@@ -188,11 +195,22 @@ class Time(_TVal):
     __radd__ = __add__
 
     def __sub__(self, other: Any) -> Any:
+        other = _coerce(other)
         if isinstance(other, Time):
             return Duration._of(self._ns - other._ns)
         if isinstance(other, Duration):
             return Time._of(self._ns - other._ns)
         return NotImplemented
+
+
+def _coerce(value: Any) -> Any:
+    """A stamp or span message (a received ``header.stamp``) as the Time or Duration it is; else as it is."""
+    kind = getattr(value, "__msgtype__", None)
+    if kind == "builtin_interfaces/msg/Time":
+        return Time._of(value.sec * _NS + value.nanosec)
+    if kind == "builtin_interfaces/msg/Duration":
+        return Duration._of(value.sec * _NS + value.nanosec)
+    return value
 
 
 #: Notified whenever ``/clock`` sets the ROS time (what a sleep in simulated time waits on).

@@ -24,66 +24,15 @@ from pathlib import Path
 
 import pytest
 from ros1helpers import SYSTEM_PYTHON, GroupProc, Ros1World
+from ros1programs import interrupt, program
 
-HERE = Path(__file__).resolve().parent
-EXAMPLES = HERE.parent.parent / "examples"
-PROBE = HERE / "tf_probe.py"
-
-# robotmodel's import lines and what a rospy user writes instead: nothing else may differ.
-REAL_IMPORTS = {
-    "from robotmodel import rospy, tf2_ros": "import rospy\nimport tf2_ros",
-    "from robotmodel.msgs.geometry_msgs.msg import TransformStamped": "from geometry_msgs.msg import TransformStamped",
-}
-
-
-def real_variant(text: str) -> str:
-    """The program with rospy's imports in place of robotmodel's."""
-    for ours, theirs in REAL_IMPORTS.items():
-        text = text.replace(ours, theirs)
-    return text
-
-
-def code_lines(text: str) -> list[str]:
-    return [line for line in text.splitlines() if not line.startswith(("import ", "from "))]
-
-
-def program(name: str, variant: str, tmp_path: Path) -> list[str]:
-    """The argv running ``examples/<name>`` as ``variant`` ("real" or "robotmodel")."""
-    path = EXAMPLES / name
-    if variant == "robotmodel":
-        return [sys.executable, str(path)]
-    text = path.read_text()
-    real = real_variant(text)
-    assert real != text
-    assert code_lines(real) == code_lines(text), "only the import lines may differ"
-    out = tmp_path / f"real_{name}"
-    out.write_text(real)
-    return [SYSTEM_PYTHON, str(out)]
+PROBE = Path(__file__).resolve().parent / "tf_probe.py"
 
 
 def start(ros1: Ros1World, argv: list[str]) -> GroupProc:
     # As a sourced ROS 1 shell runs things: robotmodel picks the ROS 1 wire from these, no flag.
     ros1.env["ROS_VERSION"] = "1"
     return ros1.start(*argv)
-
-
-def interrupt(proc: GroupProc, variant: str) -> None:
-    """SIGINT to the program (as Ctrl-C to its process group): robotmodel's must end, with status 0, within 2 s.
-
-    Real rospy's are only reaped: its listener at times stays for more than 10 s after SIGINT
-    (seen in about one run in five), which is rospy's own behaviour and not what is compared here.
-    """
-    t0 = time.monotonic()
-    os.killpg(proc.popen.pid, signal.SIGINT)
-    if variant == "real":
-        proc.kill()
-        return
-    try:
-        proc.popen.wait(10)
-    except subprocess.TimeoutExpired:
-        pytest.fail(f"{proc.argv} still running 10 s after SIGINT:\n" + "\n".join(proc.lines[-20:]))
-    assert time.monotonic() - t0 < 2.0
-    assert proc.popen.returncode == 0, "\n".join(proc.lines)
 
 
 def carrot_pose(angle: float) -> tuple[float, ...]:
@@ -100,7 +49,7 @@ def test_broadcaster_to_a_real_rospy_listener(ros1: Ros1World, tmp_path: Path, v
     deadline = time.monotonic() + 30
     while probe.count(r"^pose ") < 5 and time.monotonic() < deadline:
         time.sleep(0.05)
-    poses = [line.split()[1:] for line in probe.lines if line.startswith("pose ")]
+    poses = [line.split()[2:] for line in probe.lines if line.startswith("pose carrot ")]
     assert len(poses) >= 5, "\n".join(probe.lines)
     for words in poses:
         stamp_ns, values = int(words[0]), [float(v) for v in words[1:]]
