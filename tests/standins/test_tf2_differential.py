@@ -6,19 +6,15 @@ What is compared is what can be observed: the poses a real rospy tf2_ros listene
 (tf_probe.py) receives, checked against the broadcaster's formula (a frame circling at 2 m,
 one turn per 10 s, angle = stamp * pi / 5), the lines the listener prints (LookupException
 caught first when started before the broadcaster, then the carrot's pose), and that each
-of robotmodel's programs ends within 2 s of SIGINT with status 0.
+of robotmodel's programs ends within 2 s of SIGINT with status 0 (SIGTERM and an uncaught exception:
+test_ros1_tutorials.py).
 """
 
 from __future__ import annotations
 
 import itertools
 import math
-import os
 import re
-import signal
-import subprocess
-import sys
-import textwrap
 import time
 from pathlib import Path
 
@@ -88,34 +84,3 @@ def test_listener_started_first_catches_lookup_exception_then_follows_the_real_b
     assert caught == {"LookupException"}
     interrupt(listener, variant)
     interrupt(broadcaster, "real")
-
-
-@pytest.mark.parametrize("ending", ["exception", "SIGTERM"])
-def test_a_program_with_a_live_listener_ends_within_2_s(ros1: Ros1World, ending: str) -> None:
-    code = textwrap.dedent("""
-        import sys
-        from robotmodel import rospy, tf2_ros
-        rospy.init_node("doomed")
-        buffer = tf2_ros.Buffer()
-        listener = tf2_ros.TransformListener(buffer)
-        broadcaster = tf2_ros.TransformBroadcaster()
-        print("up", flush=True)
-        if sys.argv[1] == "exception":
-            raise RuntimeError("boom")
-        while not rospy.is_shutdown():
-            rospy.sleep(0.1)
-        """)
-    proc = start(ros1, [sys.executable, "-c", code, ending])
-    if ending == "exception":
-        proc.wait_line(r"RuntimeError: boom", 60)
-        t0 = time.monotonic()
-    else:
-        proc.wait_line(r"^up$", 60)
-        t0 = time.monotonic()
-        os.killpg(proc.popen.pid, signal.SIGTERM)
-    try:
-        proc.popen.wait(10)
-    except subprocess.TimeoutExpired:
-        pytest.fail(f"still running 10 s after the {ending}:\n" + "\n".join(proc.lines))
-    assert time.monotonic() - t0 < 2.0
-    assert proc.popen.returncode == (1 if ending == "exception" else 0)
