@@ -2,7 +2,7 @@
 
 Run with ``/use_sim_time`` true. It drives /clock itself (from 100 s, 0.1 s per 20 ms), then
 waits in simulated time: sleep, Rate, a one-shot Timer, a sleep that /clock breaks by going
-back; then logs a tick per simulated 0.1 s until shutdown, which ends the Rate's sleep with
+back (1 s of wall time after the sleep began); then logs a tick per simulated 0.1 s until shutdown, which ends the Rate's sleep with
 ROSInterruptException. Only the import lines differ between its real-rospy and robotmodel runs.
 """
 
@@ -25,7 +25,7 @@ def drive():
     while not rospy.is_shutdown():
         if back.is_set():
             after += 1
-            if after == 25:
+            if after == 50:
                 t = rospy.Time(50)
         clock.publish(t)
         t = t + rospy.Duration(0, 100000000)
