@@ -34,13 +34,15 @@ def main() -> int:
     node = rospy.get_node()
     assert node is not None
     print("wire", type(node.context.backend).__name__, flush=True)
-    program = threading.Thread(target=runpy.run_path, args=(str(PROGRAM),), kwargs={"run_name": "__main__"})
-    program.start()
     feeder = Node("odom_feeder", **options)
     odom_pub = feeder.create_publisher(Odometry, "/odom", 10)
     reader = Node("tf_reader", **options)
     buffer = tf2_ros.Buffer()
     tf2_ros.TransformListener(buffer, reader)
+    # The program starts once the peers are made: on DDS, topics made at the same time from two
+    # threads once failed in cyclonedds (DDS_RETCODE_ERROR creating a Topic) on a loaded machine.
+    program = threading.Thread(target=runpy.run_path, args=(str(PROGRAM),), kwargs={"run_name": "__main__"})
+    program.start()
     odom = Odometry()
     odom.header.frame_id = "odom"
     odom.child_frame_id = "base_link"
