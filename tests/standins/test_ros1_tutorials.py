@@ -177,7 +177,7 @@ def test_every_program_ends_within_2_s(world: Ros1World, tmp_path: Path, ending:
         except subprocess.TimeoutExpired:
             pytest.fail(f"{node} still running 10 s after the {ending}:\n" + "\n".join(proc.lines[-20:]))
         took = time.monotonic() - t0
-        assert took < 2.0, f"{node}: {took:.2f} s"
+        assert took < 2.0, f"{node}: {took:.2f} s\n" + "\n".join(proc.lines[-20:])
         if ending == "exception":
             assert proc.popen.returncode == 1
             proc.wait_line(r"^RuntimeError: injected$", 5)
