@@ -41,6 +41,7 @@ caller (and the CLI) can catch one class and print one line. The tree::
     │   └── EchoArgsError           tf2_echo's words (its text and exit code; robotmodel.tf_ros)
     ├── ROSException                rospy's root (see robotmodel.rospy)
     │   ├── ROSInterruptException   shutdown interrupted a sleep (also a KeyboardInterrupt, as rospy's)
+    │   │   └── ROSTimeMovedBackwardsException  /clock went back during a sleep (.time: seconds)
     │   └── ROSInitException        init_node refused (called twice, a bad name)
     ├── RclpyError                  rclpy's errors (see robotmodel.rclpy; rclpy's texts)
     │   ├── NotInitializedException rclpy.init() not called, or the context shut down
@@ -92,6 +93,7 @@ __all__ = [
     "ROSException",
     "ROSInitException",
     "ROSInterruptException",
+    "ROSTimeMovedBackwardsException",
     "RclpyError",
     "RecordingError",
     "ResourceError",
@@ -385,6 +387,14 @@ class ROSException(RobotModelError):
 
 class ROSInterruptException(ROSException, KeyboardInterrupt):
     """Shutdown interrupted a sleep (``rospy.sleep``, ``Rate.sleep``), as rospy's: also a KeyboardInterrupt."""
+
+
+class ROSTimeMovedBackwardsException(ROSInterruptException):
+    """The simulated time (``/clock``) moved backwards during a sleep; ``time`` is by how much, in seconds."""
+
+    def __init__(self, time: float) -> None:
+        super().__init__("ROS time moved backwards")
+        self.time = time
 
 
 class ROSInitException(ROSException):

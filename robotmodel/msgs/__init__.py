@@ -32,6 +32,7 @@ from robotmodel.msgs import (
     sensor_msgs,
     std_msgs,
     tf2_msgs,
+    turtlesim,
 )
 from robotmodel.msgs._build import make_transform, stamp
 from robotmodel.msgs._cdr import deserialize, serialize, type_hash
@@ -59,7 +60,8 @@ from robotmodel.msgs.tf2_msgs import TFMessage
 
 # ``from robotmodel.msgs.geometry_msgs.msg import Pose``, as ROS users write ``from geometry_msgs.msg import
 # Pose``: each package module is its own ``msg`` submodule.
-for _package in (builtin_interfaces, geometry_msgs, nav_msgs, rosgraph_msgs, sensor_msgs, std_msgs, tf2_msgs):
+for _package in (builtin_interfaces, geometry_msgs, nav_msgs, rosgraph_msgs, sensor_msgs, std_msgs, tf2_msgs,
+                 turtlesim):
     sys.modules[_package.__name__ + ".msg"] = _package
     vars(_package)["msg"] = _package
 
@@ -100,6 +102,7 @@ __all__ = [
     "std_msgs",
     "tf2_msgs",
     "to_rosbags",
+    "turtlesim",
     "type_hash",
     "typestore",
 ]

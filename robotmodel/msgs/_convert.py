@@ -24,6 +24,7 @@ from robotmodel.msgs import (
     sensor_msgs,
     std_msgs,
     tf2_msgs,
+    turtlesim,
 )
 from robotmodel.msgs._codegen import INT_RANGES, from_converter, to_converter
 
@@ -41,7 +42,8 @@ class Message(Protocol):
 
 _CLASSES: dict[str, type[Any]] = {
     cls.__msgtype__: cls
-    for module in (builtin_interfaces, std_msgs, geometry_msgs, sensor_msgs, nav_msgs, tf2_msgs, rosgraph_msgs)
+    for module in (builtin_interfaces, std_msgs, geometry_msgs, sensor_msgs, nav_msgs, tf2_msgs, rosgraph_msgs,
+                   turtlesim)
     for cls in (getattr(module, name) for name in module.__all__)
 }
 _FLOAT32_MAX = 3.4028234663852886e38
@@ -66,10 +68,12 @@ class _Bad(Exception):
 
 @lru_cache(maxsize=1)
 def typestore() -> Typestore:
-    """The ROS 2 Jazzy typestore of rosbags (built once, on first use)."""
-    from rosbags.typesys import Stores, get_typestore
+    """The ROS 2 Jazzy typestore of rosbags, with turtlesim's Pose registered (built once, on first use)."""
+    from rosbags.typesys import Stores, get_types_from_msg, get_typestore
 
-    return get_typestore(Stores.ROS2_JAZZY)
+    store = get_typestore(Stores.ROS2_JAZZY)
+    store.register(get_types_from_msg(turtlesim.POSE_DEFINITION, turtlesim.Pose.__msgtype__))
+    return store
 
 
 def message_class(msgtype: str) -> type[Any]:

@@ -17,11 +17,13 @@ from rosbags.typesys import Stores, TypesysError, get_types_from_msg, get_typest
 from rosbags.typesys.store import Typestore
 
 from robotmodel.errors import MessageError, Ros1Error
+from robotmodel.msgs.turtlesim import POSE_DEFINITION
 
 __all__ = ["ANY", "Ros1Type", "deserialize", "message_type", "serialize", "typestore", "wire_name"]
 
-#: tf2_msgs/TFMessage as Noetic ships it (not in rosbags' ROS1_NOETIC store).
-_EXTRA_DEFINITIONS = {"tf2_msgs/msg/TFMessage": "geometry_msgs/TransformStamped[] transforms\n"}
+#: tf2_msgs/TFMessage as Noetic ships it and turtlesim's Pose (not in rosbags' ROS1_NOETIC store).
+_EXTRA_DEFINITIONS = {"tf2_msgs/msg/TFMessage": "geometry_msgs/TransformStamped[] transforms\n",
+                      "turtlesim/msg/Pose": POSE_DEFINITION}
 
 
 @functools.cache

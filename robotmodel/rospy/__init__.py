@@ -13,14 +13,19 @@ What is here: :func:`init_node` (``anonymous=``, ``argv=`` with ``__name:=``, ``
 ``loginfo``/``logwarn``/``logerr``/``logfatal``/``logdebug`` with ``_throttle`` and ``_once``
 (rospy's line format and streams), :class:`Timer`, :func:`wait_for_message`,
 ``get_param``/``set_param``/``has_param``/``search_param``/``delete_param``,
-:class:`ROSException`, :class:`ROSInterruptException`, :class:`ROSInitException`.
+:class:`ROSException`, :class:`ROSInterruptException`, :class:`ROSInitException`,
+:class:`ROSTimeMovedBackwardsException`.
+
+Time follows ``/clock`` when ``/use_sim_time`` is true at init_node (on wires without a
+parameter server: ``_use_sim_time:=true``). Log lines go to the console in rospy's format
+(``ROSCONSOLE_FORMAT`` followed) and to ``/rosout``: ``rosgraph_msgs/Log`` on ROS 1,
+``rcl_interfaces/msg/Log`` elsewhere.
 
 Porting notes (what differs from rospy):
 
 - Publishers and Subscribers need :func:`init_node` first (rospy lets them be made before).
-- Time is the wall clock: ``/clock`` and ``use_sim_time`` are not followed; ``sleep``
-  returns early at shutdown (rospy's wall-clock sleep sleeps on) and raises nothing, as rospy's.
-- Log lines go to the console only, not to ``/rosout``; services are not here yet.
+- On the wall clock ``sleep`` returns early at shutdown (rospy's sleeps on) and raises
+  nothing, as rospy's; services are not here yet.
 - Messages come from :mod:`robotmodel.msgs` (``from robotmodel.msgs.geometry_msgs import
   TransformStamped``); their stamps are ROS 2's ``sec``/``nanosec``, and rospy's Time and
   Duration carry those names too, so ``t.header.stamp = rospy.Time.now()`` works.
@@ -28,7 +33,12 @@ Porting notes (what differs from rospy):
 
 from __future__ import annotations
 
-from robotmodel.errors import ROSException, ROSInitException, ROSInterruptException
+from robotmodel.errors import (
+    ROSException,
+    ROSInitException,
+    ROSInterruptException,
+    ROSTimeMovedBackwardsException,
+)
 from robotmodel.rospy._core import (
     Rate,
     get_name,
@@ -90,6 +100,7 @@ __all__ = [
     "ROSException",
     "ROSInitException",
     "ROSInterruptException",
+    "ROSTimeMovedBackwardsException",
     "Rate",
     "Subscriber",
     "Time",

@@ -2,10 +2,13 @@
 
 As rospy: one node per process; SIGINT and SIGTERM start shutdown (then the handler that
 was there before runs, its KeyboardInterrupt swallowed), so ``while not rospy.is_shutdown()``
-loops end and :func:`spin` returns; ``on_shutdown`` hooks run once, with the reason. Time
-is the wall clock (``/clock`` and ``/use_sim_time`` are not followed yet): :func:`sleep` and
-:meth:`Rate.sleep` return early at shutdown instead of sleeping on, and raise nothing,
-as rospy's wall-clock sleep.
+loops end and :func:`spin` returns; ``on_shutdown`` hooks run once, with the reason.
+
+Time: with ``/use_sim_time`` true at init_node the node follows ``/clock``, and
+:func:`sleep` / :meth:`Rate.sleep` wait for simulated time as rospy's do (ROSInterruptException
+at shutdown, ROSTimeMovedBackwardsException when ``/clock`` goes back). On the wall clock they
+return early at shutdown instead of sleeping on (rospy's sleeps the full time) and raise nothing, as
+rospy's wall-clock sleep.
 """
 
 from __future__ import annotations
@@ -20,8 +23,8 @@ import time
 from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any
 
-from robotmodel.errors import ROSInitException
-from robotmodel.rospy import _log
+from robotmodel.errors import ROSException, ROSInitException, ROSInterruptException, ROSTimeMovedBackwardsException
+from robotmodel.rospy import _log, _time
 from robotmodel.rospy._time import Duration, Time, get_rostime
 
 if TYPE_CHECKING:
@@ -36,11 +39,13 @@ class _State:
 
     def __init__(self) -> None:
         self.node: Node | None = None
+        self.init_args: tuple[Any, ...] = ()
         self.name = "/unnamed"
         self.namespace = "/"
         self.shutdown = threading.Event()
         self.reason = ""
         self.hooks: list[Callable[..., Any]] = []
+        self.subscriptions: list[Any] = []  # closed first at shutdown (see signal_shutdown)
         self.lock = threading.Lock()
 
 
@@ -95,14 +100,22 @@ def init_node(name: str, argv: Sequence[str] | None = None, anonymous: bool = Fa
 
     ``argv`` (default ``sys.argv``) is read for ``__name:=``, ``__ns:=``, ``_param:=value``
     (a private parameter, its value read as YAML) and ``from:=to`` topic remaps;
-    ``ROS_NAMESPACE`` sets the namespace. ``bus_options`` (robotmodel's, e.g. ``backend``,
-    ``domain_id``) go to :class:`robotmodel.bus.Node`.
+    ``ROS_NAMESPACE`` sets the namespace. ``/use_sim_time`` true (on wires without a parameter
+    server: ``_use_sim_time:=true``) makes the node follow ``/clock``; log lines go to
+    ``/rosout`` unless ``disable_rosout``. ``bus_options`` (robotmodel's, e.g. ``backend``,
+    ``domain_id``) go to :class:`robotmodel.bus.Node`. Called again with the same arguments
+    (``bus_options`` aside) it does nothing, with others it raises ROSException, as rospy.
     """
-    del disable_rostime, disable_rosout, xmlrpc_port, tcpros_port
+    del xmlrpc_port, tcpros_port
     from robotmodel.bus import Node
 
+    args = (name, argv, anonymous, log_level, disable_rostime, disable_signals)
     if _state.node is not None:
-        raise ROSInitException(f"rospy.init_node() has already been called with different arguments: {_state.name}")
+        # As rospy: the same call again is a no-op (so a harness may open the node first, on a
+        # wire of its choosing, and then run a program that calls init_node as usual).
+        if args == _state.init_args:
+            return
+        raise ROSException(f"rospy.init_node() has already been called with different arguments: {_state.init_args}")
     if "/" in name:
         raise ValueError("namespaces are not allowed in node names")
     words = list(sys.argv if argv is None else argv)
@@ -132,6 +145,7 @@ def init_node(name: str, argv: Sequence[str] | None = None, anonymous: bool = Fa
     node = Node(name, namespace, remappings=remaps, **bus_options)
     with _state.lock:
         _state.node = node
+        _state.init_args = args
         _state.name = node.fully_qualified_name
         _state.namespace = node.namespace
     store = node.parameters
@@ -139,6 +153,12 @@ def init_node(name: str, argv: Sequence[str] | None = None, anonymous: bool = Fa
         store.set(resolve_name("~" + key), value)
     if log_level is not None:
         _log.set_level(log_level)
+    if not disable_rostime and _wants_sim_time(store):
+        _follow_clock(node)
+    if not disable_rosout:
+        from robotmodel.rospy._rosout import rosout_sink
+
+        _log.set_sink(rosout_sink(node), _state.name)
     # Handlers can only be installed from the main thread; rospy skips them elsewhere too.
     if not disable_signals and threading.current_thread() is threading.main_thread():
         for sig in (signal.SIGINT, signal.SIGTERM):
@@ -148,6 +168,33 @@ def init_node(name: str, argv: Sequence[str] | None = None, anonymous: bool = Fa
         # ROS 1's master or rosnode may ask the node to end (shutdown over XML-RPC).
         event = requested()
         threading.Thread(target=_follow, args=(event,), name="rospy-shutdown", daemon=True).start()
+
+
+def _wants_sim_time(store: Any) -> bool:
+    from robotmodel.bus import LocalParameters
+
+    keys = ["/use_sim_time"]
+    if isinstance(store, LocalParameters):  # no parameter server: the node's own, as ROS 2's
+        keys.append(resolve_name("~use_sim_time"))
+    for key in keys:
+        try:
+            if store.get(key) is True:
+                return True
+        except KeyError:
+            continue
+    return False
+
+
+def _follow_clock(node: Node) -> None:
+    from robotmodel.bus import QoS
+    from robotmodel.msgs.rosgraph_msgs import Clock
+
+    _time.use_sim_time()
+
+    def tick(msg: Clock) -> None:
+        _time.set_rostime(msg.clock.sec * 1_000_000_000 + msg.clock.nanosec)
+
+    _state.subscriptions.append(node.create_subscription(Clock, "/clock", tick, QoS(1)))
 
 
 def _follow(event: threading.Event) -> None:
@@ -205,8 +252,16 @@ def signal_shutdown(reason: str) -> None:
         _state.shutdown.set()
         hooks, _state.hooks = _state.hooks, []
         node = _state.node
+    with _time.clock_cond:
+        _time.clock_cond.notify_all()  # a sleep in simulated time ends now
     for hook in hooks:
         _run(hook, reason)
+    _log.set_sink(None, _state.name)
+    # Subscriptions before publishers: one fed by this node's own publisher (a simulator's
+    # /clock) would otherwise see it vanish and try to reconnect, warning, while the node ends.
+    for sub in _state.subscriptions:
+        with contextlib.suppress(Exception):
+            sub.close()
     if node is not None:
         node.close()
 
@@ -234,10 +289,39 @@ def _seconds(duration: Any) -> float:
 
 
 def sleep(duration: Any) -> None:
-    """Sleep ``duration`` (seconds or a Duration); a negative one returns at once, shutdown ends it early."""
-    seconds = _seconds(duration)
-    if seconds > 0:
-        _state.shutdown.wait(seconds)
+    """Sleep ``duration`` (seconds or a Duration) of ROS time; a negative one returns at once.
+
+    On the wall clock shutdown ends it early, silently; in simulated time it raises
+    ROSInterruptException at shutdown and ROSTimeMovedBackwardsException if ``/clock`` went back.
+    """
+    if _time.is_wallclock():
+        seconds = _seconds(duration)
+        if seconds > 0:
+            _state.shutdown.wait(seconds)
+        return
+    sim_sleep(round(_seconds(duration) * 1e9))
+
+
+def sim_sleep(nanoseconds: int, stop: threading.Event | None = None) -> None:
+    """Wait ``nanoseconds`` of ``/clock`` time (ended early by ``stop``), as rospy's sleep in simulated time."""
+    cond = _time.clock_cond
+
+    def ended() -> bool:
+        return _state.shutdown.is_set() or (stop is not None and stop.is_set())
+
+    with cond:
+        start = get_rostime()
+        while start.is_zero() and not ended():  # no /clock yet
+            cond.wait(0.3)
+            start = get_rostime()
+        end = start + Duration._of(nanoseconds)
+        while start <= get_rostime() < end and not ended():
+            cond.wait(0.5)
+        now = get_rostime()
+    if now < start:
+        raise ROSTimeMovedBackwardsException((start - now).to_sec())
+    if _state.shutdown.is_set():
+        raise ROSInterruptException("ROS shutdown request")
 
 
 class Rate:
@@ -259,9 +343,18 @@ class Rate:
         return left
 
     def sleep(self) -> None:
-        """Sleep what is left of this cycle, keeping the loop on its period."""
+        """Sleep what is left of this cycle, keeping the loop on its period.
+
+        A Rate made with ``reset=True`` starts afresh when ``/clock`` goes back, instead of raising.
+        """
         now = get_rostime()
-        sleep(self._remaining(now))
+        try:
+            sleep(self._remaining(now))
+        except ROSTimeMovedBackwardsException:
+            if not self._reset:
+                raise
+            self.last_time = get_rostime()
+            return
         self.last_time = self.last_time + self.sleep_dur
         # A loop that fell behind by more than two periods starts afresh instead of bursting.
         if now - self.last_time > self.sleep_dur * 2:

@@ -1,16 +1,24 @@
-"""rospy's Time and Duration: seconds and nanoseconds (``secs``/``nsecs``), genpy's arithmetic.
+"""rospy's Time and Duration: seconds and nanoseconds (``secs``/``nsecs``), genpy's arithmetic; the ROS clock.
 
 Both also carry ``sec``/``nanosec`` and ``nanoseconds``, so they go into robotmodel's
-messages (``t.header.stamp = rospy.Time.now()``) and its tf2 buffer as they are.
+messages (``t.header.stamp = rospy.Time.now()``) and its tf2 buffer as they are; the other
+way, a received stamp message takes part in their arithmetic and comparisons
+(``rospy.Time.now() - msg.header.stamp``).
+
+The ROS clock is the wall clock unless the node follows ``/clock`` (``/use_sim_time`` true
+at init_node, as rospy): then :func:`get_rostime` is the last ``/clock`` received, zero
+before the first, and :data:`clock_cond` is notified on each.
 """
 
 from __future__ import annotations
 
 import math
+import threading
 import time as _systime
 from typing import Any, Self
 
-__all__ = ["Duration", "Time", "get_rostime", "get_time"]
+__all__ = ["Duration", "Time", "clock_cond", "get_rostime", "get_time", "is_wallclock", "set_rostime",
+           "use_sim_time"]
 
 _NS = 1_000_000_000
 
@@ -92,11 +100,13 @@ class _TVal:
         return f"rospy.{type(self).__name__}[{self._ns}]"
 
     def _cmp(self, other: Any) -> int:
+        other = _coerce(other)
         if type(other) is not type(self):
             raise TypeError(f"cannot compare {type(self).__name__} to {type(other).__name__}")
         return int(other._ns)
 
     def __eq__(self, other: object) -> bool:
+        other = _coerce(other)
         return type(other) is type(self) and other._ns == self._ns
 
     def __lt__(self, other: Any) -> bool:
@@ -124,6 +134,7 @@ class Duration(_TVal):
         return Duration._of(abs(self._ns))
 
     def __add__(self, other: Any) -> Any:
+        other = _coerce(other)
         if isinstance(other, Time):
             return Time._of(self._ns + other._ns)
         if isinstance(other, Duration):
@@ -133,6 +144,7 @@ class Duration(_TVal):
     __radd__ = __add__
 
     def __sub__(self, other: Any) -> Duration:
+        other = _coerce(other)
         if isinstance(other, Duration):
             return Duration._of(self._ns - other._ns)
         return NotImplemented
@@ -171,10 +183,11 @@ class Time(_TVal):
 
     @classmethod
     def now(cls) -> Time:
-        """The current ROS time (the wall clock: /clock and use_sim_time are not followed yet)."""
+        """The current ROS time (``/clock``'s under ``/use_sim_time``, else the wall clock)."""
         return get_rostime()
 
     def __add__(self, other: Any) -> Time:
+        other = _coerce(other)
         if isinstance(other, Duration):
             return Time._of(self._ns + other._ns)
         return NotImplemented
@@ -182,6 +195,7 @@ class Time(_TVal):
     __radd__ = __add__
 
     def __sub__(self, other: Any) -> Any:
+        other = _coerce(other)
         if isinstance(other, Time):
             return Duration._of(self._ns - other._ns)
         if isinstance(other, Duration):
@@ -189,11 +203,47 @@ class Time(_TVal):
         return NotImplemented
 
 
+def _coerce(value: Any) -> Any:
+    """A stamp or span message (a received ``header.stamp``) as the Time or Duration it is; else as it is."""
+    kind = getattr(value, "__msgtype__", None)
+    if kind == "builtin_interfaces/msg/Time":
+        return Time._of(value.sec * _NS + value.nanosec)
+    if kind == "builtin_interfaces/msg/Duration":
+        return Duration._of(value.sec * _NS + value.nanosec)
+    return value
+
+
+#: Notified whenever ``/clock`` sets the ROS time (what a sleep in simulated time waits on).
+clock_cond = threading.Condition()
+_sim: list[int] = []  # empty: the wall clock; else [the last /clock in nanoseconds]
+
+
+def use_sim_time() -> None:
+    """Follow ``/clock`` from now on (the time is zero until the first one arrives)."""
+    with clock_cond:
+        if not _sim:
+            _sim.append(0)
+
+
+def set_rostime(nanoseconds: int) -> None:
+    """Set the simulated time (what each ``/clock`` message does)."""
+    with clock_cond:
+        if _sim:
+            _sim[0] = int(nanoseconds)
+            clock_cond.notify_all()
+
+
+def is_wallclock() -> bool:
+    """Whether the ROS time is the wall clock (no ``/use_sim_time``)."""
+    return not _sim
+
+
 def get_rostime() -> Time:
     """The current ROS time as a Time."""
-    return Time._of(_systime.time_ns())
+    sim = _sim
+    return Time._of(sim[0] if sim else _systime.time_ns())
 
 
 def get_time() -> float:
     """The current ROS time in float seconds."""
-    return _systime.time_ns() / _NS
+    return get_rostime().nanoseconds / _NS

@@ -89,13 +89,15 @@ class Subscriber:
                 callback(msg, callback_args)
 
         node = _node()
+        self._node = node
         self._sub: Any = node.create_subscription(data_class, name, deliver, QoS(queue_size or 10))
+        _core._state.subscriptions.append(self._sub)
         self.name = str(node.resolve_topic_name(name))
         self.resolved_name = self.name
 
     def get_num_connections(self) -> int:
-        """How many publishers are connected (not tracked here: 0)."""
-        return 0
+        """How many publishers the graph shows on the topic (rospy counts those connected)."""
+        return int(self._node.count_publishers(self.name))
 
     def unregister(self) -> None:
         """Stop receiving."""

@@ -1,7 +1,8 @@
 """rospy's Timer and wait_for_message.
 
-:class:`Timer` calls ``callback(TimerEvent)`` every ``period`` on a thread of its own (as
-rospy), until :meth:`Timer.shutdown` or the node's shutdown; ``oneshot=True`` calls once.
+:class:`Timer` calls ``callback(TimerEvent)`` every ``period`` of ROS time (``/clock``'s under
+``/use_sim_time``) on a thread of its own (as rospy), until :meth:`Timer.shutdown` or the
+node's shutdown; ``oneshot=True`` calls once.
 :func:`wait_for_message` subscribes, waits for one message and unsubscribes.
 """
 
@@ -12,7 +13,7 @@ from collections.abc import Callable
 from typing import Any, NamedTuple
 
 from robotmodel.errors import ROSException, ROSInterruptException
-from robotmodel.rospy import _core
+from robotmodel.rospy import _core, _time
 from robotmodel.rospy._time import Duration, Time, get_rostime
 
 __all__ = ["Timer", "TimerEvent", "wait_for_message"]
@@ -55,10 +56,7 @@ class Timer(threading.Thread):
         last_real: Time | None = None
         last_duration: float | None = None
         while not self._ended.is_set() and not _core.is_shutdown():
-            wait = (expected - get_rostime()).to_sec()
-            if wait > 0 and self._ended.wait(wait):
-                return
-            if _core.is_shutdown():
+            if not self._pause(expected - get_rostime()):
                 return
             real = get_rostime()
             began = time.monotonic()
@@ -68,6 +66,18 @@ class Timer(threading.Thread):
                 return
             last_expected, last_real = expected, real
             expected = expected + self._period
+
+    def _pause(self, left: Duration) -> bool:
+        """Wait ``left`` of ROS time; False when the timer or the node ended meanwhile."""
+        if _time.is_wallclock():
+            if left.nanoseconds > 0 and self._ended.wait(left.to_sec()):
+                return False
+        else:
+            try:
+                _core.sim_sleep(left.nanoseconds, self._ended)
+            except ROSInterruptException:  # shutdown, or /clock went back: the timer ends, as rospy's
+                return False
+        return not (self._ended.is_set() or _core.is_shutdown())
 
 
 def wait_for_message(topic: str, topic_type: type[Any], timeout: float | Duration | None = None) -> Any:

@@ -35,7 +35,7 @@ def test_msgs_surface() -> None:
         "PoseWithCovariance", "Quaternion", "String", "TFMessage", "TFRecord", "Transform", "TransformStamped", "Twist",
         "TwistStamped", "TwistWithCovariance", "Vector3", "Vector3Stamped", "builtin_interfaces", "decode_tf_records",
         "deserialize", "encode_tf_records", "from_rosbags", "geometry_msgs", "make_transform", "message_class", "nav_msgs", "rosgraph_msgs",
-        "sensor_msgs", "serialize", "stamp", "std_msgs", "tf2_msgs", "to_rosbags", "type_hash", "typestore",
+        "sensor_msgs", "serialize", "stamp", "std_msgs", "tf2_msgs", "to_rosbags", "turtlesim", "type_hash", "typestore",
     ]
     for name in robotmodel.msgs.__all__:
         assert getattr(robotmodel.msgs, name).__doc__, name

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import importlib
 import os
+import re
 import subprocess
 import sys
 import textwrap
@@ -41,17 +42,18 @@ def test_argv_words_params_and_topics() -> None:
         pub.publish(Vector3(5.0, 0.0, 0.0))
         rospy.sleep(0.2)
         print(got)
+        rospy.init_node("talker", anonymous=True, backend="zenoh")  # the same call: a no-op, as rospy's
         try:
             rospy.init_node("again")
-        except rospy.ROSInitException:
-            print("twice refused")
+        except rospy.ROSException as exc:
+            print("twice refused", type(exc).__name__, "different arguments" in str(exc))
         """, "plain", "_gain:=0.5", "_label:=hi", "vec:=renamed", env={"ROS_NAMESPACE": "/ns"})
     assert done.stdout.splitlines() == [
         "True /ns/",
         "0.5 'hi' ['plain']",
         "/ns/shared None",
         "[('t', 1.0, 2.0, 3.0), ('t', 4.0, 0.0, 0.0), ('t', 5.0, 0.0, 0.0)]",
-        "twice refused",
+        "twice refused ROSException True",
     ]
 
 
@@ -156,3 +158,42 @@ def test_rospy_style_tf2_ros_classes_use_the_rospy_node() -> None:
         before.close()
         """)
     assert done.stdout.split() == ["True"] * 4
+
+
+def test_sim_time_from_a_private_parameter_and_rosout_as_ros2_log() -> None:
+    """Off ROS 1 (no parameter server): ``_use_sim_time:=true`` follows /clock; log lines are rcl_interfaces/msg/Log."""
+    done = run("""
+        import threading, time
+        from robotmodel import rospy
+        from robotmodel.bus import Node
+        from robotmodel.msgs.rosgraph_msgs import Clock
+        rospy.init_node("simmed", backend="inprocess", domain_id=9)
+        print("before", rospy.get_rostime().to_nsec())
+        peer = Node("peer", backend="inprocess", domain_id=9)
+        logs = []
+        peer.create_subscription("rcl_interfaces/msg/Log", "/rosout", logs.append, 10)
+        clock = peer.create_publisher(Clock, "/clock", 1)
+        def drive(stop=threading.Event()):
+            t = 42_000_000_000
+            while not rospy.is_shutdown():
+                msg = Clock()
+                msg.clock.sec, msg.clock.nanosec = divmod(t, 1_000_000_000)
+                clock.publish(msg)
+                t += 100_000_000
+                stop.wait(0.01)
+        threading.Thread(target=drive, daemon=True).start()
+        rospy.sleep(0)
+        start = rospy.Time.now()
+        rospy.sleep(1.0)  # ten /clock ticks: about 0.1 s of wall time
+        print("after", start.secs >= 42, (rospy.Time.now() - start).to_sec() >= 1.0)
+        rospy.logwarn("careful %d", 3)
+        deadline = time.monotonic() + 10
+        while not logs and time.monotonic() < deadline:
+            time.sleep(0.01)
+        log = logs[0]
+        print(log.level, log.name, log.msg, log.function, log.stamp.sec >= 42)
+        rospy.signal_shutdown("done")
+        """, "_use_sim_time:=true")
+    lines = done.stdout.splitlines()
+    assert lines[:3] == ["before 0", "after True True", "30 simmed careful 3 <module> True"]
+    assert re.match(r"^\[WARN\] \[\d+\.\d{6}, 4\d\.\d{6}\]: careful 3$", done.stderr.splitlines()[0])

@@ -85,3 +85,52 @@ def test_subscriber_latched_publisher_and_spin_returning_on_ctrl_c(ros1: Ros1Wor
     if variant == "robotmodel":  # real rospy's exit time is its own; only robotmodel's is held to 2 s
         assert time.monotonic() - t0 < 2.0
     assert node.popen.returncode == 0, "\n".join(node.lines)
+
+
+def test_sim_time_and_rosout_as_real_rospy(ros1: Ros1World, tmp_path: Path) -> None:
+    """/use_sim_time: sleeps, Rate, Timer, a backwards /clock and shutdown; each log line also on /rosout.
+
+    The lines are printed in a ROSCONSOLE_FORMAT of their own (node, function, line).
+    """
+    ros1.tool("rosparam", "set", "/use_sim_time", "true")
+    ros1.env["ROS_VERSION"] = "1"
+    ros1.env["ROSCONSOLE_FORMAT"] = "${severity} [${time}] ${node} ${function}:${line}: ${message}"
+    probe = ros1.start(SYSTEM_PYTHON, str(HERE / "rosout_probe.py"), "/clocked")
+    probe.wait_line(r"^ready$", 60)
+    source = HERE / "rospy_clock.py"
+    real = tmp_path / "real" / source.name  # the same base name: /rosout carries it
+    real.parent.mkdir()
+    real.write_text(source.read_text().replace("from robotmodel import rospy", "import rospy")
+                    .replace("from robotmodel.msgs.rosgraph_msgs.msg import Clock", "from rosgraph_msgs.msg import Clock"))
+    outputs, logs = [], []
+    for argv in ([SYSTEM_PYTHON, str(real)], [sys.executable, str(source)]):
+        seen = len(probe.lines)
+        node = ros1.start(*argv)
+        node.wait_line(r": tick 3$", 60)
+        deadline = time.monotonic() + 30
+        while sum("|tick " in line for line in probe.lines[seen:]) < 3 and time.monotonic() < deadline:
+            time.sleep(0.05)
+        t0 = time.monotonic()
+        os.killpg(node.popen.pid, signal.SIGINT)
+        node.wait_line(r"^interrupted$", 10)
+        node.popen.wait(10)
+        if argv[0] == sys.executable:
+            assert time.monotonic() - t0 < 2.0
+        assert node.popen.returncode == 0, "\n".join(node.lines)
+        outputs.append([re.sub(r"^(\w+) \[\d+\.\d{6}, \d+\.\d{6}\] ", r"\1 [W, S] ", line)
+                        for line in node.lines if not re.search(r": tick \d+$", line)])
+        logs.append({re.sub(r"tick \d+", "tick N", line) for line in probe.lines[seen:] if "|tick " in line
+                     or "|once|" in line})
+    assert outputs[1] == outputs[0]
+    assert logs[1] == logs[0]
+    # Checked independently of the real run.
+    text = source.read_text().splitlines()
+    sim, once = (next(n for n, line in enumerate(text, 1) if call in line)
+                 for call in ('rospy.loginfo("sim time', 'rospy.logwarn_once("once")'))
+    assert outputs[1] == ["before any /clock 0 0.0", "started True", f"INFO [W, S] /clocked <module>:{sim}: sim time True",
+                          "slept True", "rate True", "timer 1 True", "moved back True True",
+                          f"WARN [W, S] /clocked <module>:{once}: once", "interrupted"]
+    lines = {n for n, text in enumerate(source.read_text().splitlines(), 1) if "tick %d" in text or '"once"' in text}
+    assert {int(entry.split("|")[4]) for entry in logs[1]} == lines
+    assert all(entry.split("|")[2:4] == ["rospy_clock.py", "<module>"] for entry in logs[1])
+    assert {entry.split("|")[5] for entry in logs[1]} == {"/clock,/rosout"}
