@@ -1,0 +1,223 @@
+"""Launch description sources and ``IncludeLaunchDescription``: Python, XML and YAML launch files.
+
+A Python file is the user's own code, run as ``ros2 launch`` runs it: imported, then its
+``generate_launch_description()`` called. An XML or YAML file included from one is read by
+the XML launcher with the includer's launch configurations, namespace, ``SetRemap`` and
+``SetParameter`` in force (an include is not scoped, so what it sets stays set).
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import itertools
+from pathlib import Path
+from typing import Any
+
+from robotmodel.errors import LaunchError
+from robotmodel.launch._pyactions import Action, LaunchDescription, SetLaunchConfiguration
+from robotmodel.launch._pyctx import LaunchContext
+from robotmodel.launch._pysubst import Substitution, TextSubstitution, normalize, perform_all
+
+__all__ = [
+    "AnyLaunchDescriptionSource",
+    "FrontendLaunchDescriptionSource",
+    "IncludeLaunchDescription",
+    "LaunchDescriptionSource",
+    "PythonLaunchDescriptionSource",
+    "XMLLaunchDescriptionSource",
+    "YAMLLaunchDescriptionSource",
+    "load_python_file",
+]
+
+_MAX_DEPTH = 32
+_COUNTER = itertools.count()
+
+
+class LaunchDescriptionSource:
+    """A launch description, given or found at a location (a path, possibly substitutions)."""
+
+    kind = "any"
+
+    def __init__(self, launch_description: Any = None, location: Any = "<script>", method: str = "") -> None:
+        del method
+        if isinstance(launch_description, LaunchDescription):
+            self.given: LaunchDescription | None = launch_description
+            self.location = normalize(location)
+        else:
+            self.given = None
+            self.location = normalize(launch_description if launch_description is not None else location)
+
+    def path(self, context: LaunchContext) -> Path:
+        """The file, resolved in ``context``."""
+        return Path(perform_all(context, self.location))
+
+    def static_path(self) -> Path | None:
+        """The file when its location needs no context (for ``--show-args``)."""
+        if self.given is None and all(isinstance(s, TextSubstitution) for s in self.location):
+            return Path("".join(s.text for s in self.location if isinstance(s, TextSubstitution)))
+        return None
+
+
+class PythonLaunchDescriptionSource(LaunchDescriptionSource):
+    """A Python launch file."""
+
+    kind = "python"
+
+    def __init__(self, launch_file_path: Any) -> None:
+        super().__init__(location=launch_file_path)
+
+
+class FrontendLaunchDescriptionSource(LaunchDescriptionSource):
+    """An XML or YAML launch file."""
+
+    kind = "frontend"
+
+    def __init__(self, launch_file_path: Any) -> None:
+        super().__init__(location=launch_file_path)
+
+
+class XMLLaunchDescriptionSource(FrontendLaunchDescriptionSource):
+    """launch_xml's: an XML launch file."""
+
+
+class YAMLLaunchDescriptionSource(FrontendLaunchDescriptionSource):
+    """launch_yaml's: a YAML launch file."""
+
+
+class AnyLaunchDescriptionSource(LaunchDescriptionSource):
+    """A launch file of any kind, told by its name (``.py``: Python, else XML or YAML)."""
+
+    def __init__(self, launch_file_path: Any) -> None:
+        super().__init__(location=launch_file_path)
+
+
+def load_python_file(path: Path) -> LaunchDescription:
+    """Import ``path`` and call its ``generate_launch_description()``."""
+    if not path.is_file():
+        raise LaunchError(f"{path}: no such launch file")
+    spec = importlib.util.spec_from_file_location(f"robotmodel_launch_file_{next(_COUNTER)}", path)
+    if spec is None or spec.loader is None:
+        raise LaunchError(f"{path}: cannot be loaded as a Python launch file")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    make = getattr(module, "generate_launch_description", None)
+    if not callable(make):
+        raise LaunchError(f"launch file at '{path}' does not contain the required function "
+                          "'generate_launch_description()'")
+    result = make()
+    if not isinstance(result, LaunchDescription):
+        raise LaunchError(f"{path}: generate_launch_description() returned {type(result).__name__}, "
+                          "not a LaunchDescription")
+    return result
+
+
+def _is_python(source: LaunchDescriptionSource, path: Path) -> bool:
+    if source.kind == "any":
+        return path.suffix == ".py"
+    return source.kind == "python"
+
+
+class IncludeLaunchDescription(Action):
+    """Include a launch description with ``launch_arguments`` set as launch configurations (not scoped)."""
+
+    def __init__(self, launch_description_source: Any, *, launch_arguments: Any = None, **kwargs: Any) -> None:
+        super().__init__(**kwargs)
+        if not isinstance(launch_description_source, LaunchDescriptionSource):
+            launch_description_source = AnyLaunchDescriptionSource(launch_description_source)
+        self.source = launch_description_source
+        self.launch_arguments = [(k, v) for k, v in (launch_arguments or [])]
+
+    @property
+    def launch_description_source(self) -> LaunchDescriptionSource:
+        """Where the description comes from."""
+        source: LaunchDescriptionSource = self.source
+        return source
+
+    def get_sub_entities(self) -> list[Any]:
+        """The included description when it can be loaded without running (launch's rule, for ``--show-args``)."""
+        if self.source.given is not None:
+            return [self.source.given]
+        path = self.source.static_path()
+        if path is None or not path.is_file() or not _is_python(self.source, path):
+            return []
+        try:
+            return [load_python_file(path)]
+        except Exception:
+            return []
+
+    def execute(self, context: LaunchContext) -> list[Any]:
+        """Load it, check its required arguments, set the given ones, then visit it."""
+        if context.depth >= _MAX_DEPTH:
+            raise LaunchError(f"{self.where()}: includes nested deeper than {_MAX_DEPTH} (an include cycle?)")
+        names = [perform_all(context, normalize(k)) for k, _ in self.launch_arguments]
+        values = [perform_all(context, normalize(v)) for _, v in self.launch_arguments]
+        if self.source.given is not None:
+            return [*(SetLaunchConfiguration(k, v) for k, v in zip(names, values, strict=True)), self.source.given]
+        path = self.source.path(context)
+        if not path.is_absolute():
+            path = (context.file.parent / path) if (context.file.parent / path).exists() else Path.cwd() / path
+        if not path.is_file():
+            raise LaunchError(f"{self.where()}: launch file not found: {path}")
+        if not _is_python(self.source, path):
+            for name, value in zip(names, values, strict=True):
+                context.launch_configurations[name] = value
+            _Frontend(path).run(context)
+            return []
+        description = load_python_file(path)
+        for argument in description.get_launch_arguments():
+            if argument.conditionally_included or argument.default_value is not None or argument.name in names:
+                continue
+            raise LaunchError(f"{path}: Included launch description missing required argument '{argument.name}' "
+                              f"(description: '{argument.description}'), given: [{', '.join(names)}]")
+        return [_Enter(path), *(SetLaunchConfiguration(k, v) for k, v in zip(names, values, strict=True)),
+                description, _Leave(context.file)]
+
+
+class _Enter(Action):
+    def __init__(self, path: Path) -> None:
+        super().__init__()
+        self.path = path
+
+    def execute(self, context: LaunchContext) -> None:
+        context.file = self.path
+        context.depth += 1
+
+
+class _Leave(Action):
+    def __init__(self, path: Path) -> None:
+        super().__init__()
+        self.path = path
+
+    def execute(self, context: LaunchContext) -> None:
+        context.file = self.path
+        context.depth -= 1
+
+
+class _Frontend:
+    """An XML or YAML file read by the XML launcher inside the Python run's scope."""
+
+    def __init__(self, path: Path) -> None:
+        self.path = path
+
+    def run(self, context: LaunchContext) -> None:
+        from robotmodel.launch._loader import _Loader, _Scope
+        from robotmodel.launch._model import Dialect
+        from robotmodel.launch._xml import parse_file
+        from robotmodel.launch._yamlfront import parse_yaml_file
+
+        loader = _Loader(context.package_paths)
+        loader.found = context.found
+        yaml_file = self.path.name.endswith((".yaml", ".yml"))
+        root = parse_yaml_file(self.path) if yaml_file else parse_file(self.path)
+        configs: dict[str, str | None] = context.launch_configurations  # type: ignore[assignment]
+        scope = _Scope(self.path, Dialect.ROS2, configs, dict(context.launch_configurations), set(),
+                       context.frame.ns or "/", context.depth + 1, context.frame.remaps, context.frame.params)
+        loader._walk(root.children, scope)
+        context.nodes.extend(loader.nodes)
+        context.skipped.extend(loader.skipped)
+        context.notes.extend(loader.notes)
+
+
+def is_substitution(value: Any) -> bool:
+    """Whether ``value`` is a launch substitution."""
+    return isinstance(value, Substitution)
