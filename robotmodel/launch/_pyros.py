@@ -2,9 +2,10 @@
 
 A ``Node`` becomes a :class:`robotmodel.launch.NodeDecl`, as the XML launcher reads a
 ``<node>``, so the same mapping decides what starts. Parameter values follow launch_ros's
-evaluation: text and substitutions are read as YAML (a URDF whose text is not a YAML
-scalar fails with launch_ros's message; ``ParameterValue(..., value_type=str)`` keeps text
-as text), lists must be uniform, nested dicts name nested parameters (``a.b``).
+evaluation: a Python string stays that string, substitutions are read as YAML (a URDF
+from ``Command`` whose text is not a YAML scalar fails with launch_ros's message;
+``ParameterValue(..., value_type=str)`` keeps text as text), lists must be uniform (ints
+and floats: floats), nested dicts name nested parameters (``a.b``).
 """
 
 from __future__ import annotations
@@ -105,6 +106,8 @@ def evaluate_value(context: LaunchContext, name: str, value: Any) -> tuple[Any, 
     """launch_ros's value of parameter ``name``: (value, the text it came from, if any)."""
     if isinstance(value, ParameterValue):
         return value.evaluate(context, name)
+    if isinstance(value, str):
+        return value, value  # launch_ros dumps it as YAML and reads it back: the same text, as text
     if _is_text(value):
         text = perform_all(context, normalize(value))
         return _from_yaml(name, text), text
@@ -113,6 +116,8 @@ def evaluate_value(context: LaunchContext, name: str, value: Any) -> tuple[Any, 
             items = [_from_yaml(name, perform_all(context, normalize(v))) for v in value]
         else:
             items = list(value)
+            if items and all(type(v) in (int, float) for v in items):
+                items = [float(v) for v in items] if any(type(v) is float for v in items) else items
         if not _uniform(items):
             raise TypeError("Expected a non-empty sequence, with items of uniform type. Allowed sequence item types "
                             f"are bool, int, float, str. Got inconsistent input for \"{name}\"")
