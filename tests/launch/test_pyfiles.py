@@ -10,7 +10,6 @@ file's plan.
 
 from __future__ import annotations
 
-import os
 import re
 import shutil
 import signal
@@ -158,35 +157,43 @@ def test_launch_py_brings_every_link_up_and_ctrl_c_stops_all(name: str, ws: Path
     bus.env.update(_environ(case))
     for key, value in _environ(case).items():
         monkeypatch.setenv(key, value)
-    for live in joined(bus, monkeypatch):
-        proc = live.start(sys.executable, "-m", "robotmodel.cli.main", "launch", "--no-browser", *_words(case, ws))
-        pids: dict[str, int] = {}
+    live = joined(bus, monkeypatch)
+    next(live)
+    try:
+        _bring_up(bus, case, ws, links, root)
+    finally:
+        live.close()
 
-        def enough() -> bool:
-            for line in proc.err:
-                m = STARTED.search(line)
-                if m:
-                    pids[m.group(1)] = int(m.group(2))
-            return len(pids) >= len(case.processes)
 
-        proc.wait_for(enough, 60, f"{len(case.processes)} processes started")
-        kinds = sorted(re.sub(r"-\d+$", "", label).rsplit("/", 1)[-1] for label in pids)
-        assert kinds == sorted(k if k != "rviz" else "rviz2" for k in case.processes), pids
-        buffer = Buffer()
-        with TransformListener(buffer):
-            deadline = time.monotonic() + 60
-            missing = links
-            while missing and time.monotonic() < deadline:
-                missing = [link for link in links if link != root and not buffer.can_transform(root, link, Time())]
-                if missing:
-                    time.sleep(0.1)
-            assert not missing, f"not on /tf or /tf_static within 60 s: {missing}\n{buffer.all_frames_as_string()}"
-        start = time.monotonic()
-        assert proc.stop(signal.SIGINT, timeout=5.0) == 0
-        while not all(_gone(pid) for pid in pids.values()):
-            assert time.monotonic() - start < 5.0, f"still running 5 s after Ctrl-C: {pids}"
-            time.sleep(0.05)
-        assert "Traceback" not in "\n".join(proc.err)
+def _bring_up(live: Bus, case: Case, ws: Path, links: list[str], root: str) -> None:
+    proc = live.start(sys.executable, "-m", "robotmodel.cli.main", "launch", "--no-browser", *_words(case, ws))
+    pids: dict[str, int] = {}
+
+    def enough() -> bool:
+        for line in proc.err:
+            m = STARTED.search(line)
+            if m:
+                pids[m.group(1)] = int(m.group(2))
+        return len(pids) >= len(case.processes)
+
+    proc.wait_for(enough, 60, f"{len(case.processes)} processes started")
+    kinds = sorted(re.sub(r"-\d+$", "", label).rsplit("/", 1)[-1] for label in pids)
+    assert kinds == sorted(k if k != "rviz" else "rviz2" for k in case.processes), pids
+    buffer = Buffer()
+    with TransformListener(buffer):
+        deadline = time.monotonic() + 60
+        missing = links
+        while missing and time.monotonic() < deadline:
+            missing = [link for link in links if link != root and not buffer.can_transform(root, link, Time())]
+            if missing:
+                time.sleep(0.1)
+        assert not missing, f"not on /tf or /tf_static within 60 s: {missing}\n{buffer.all_frames_as_string()}"
+    start = time.monotonic()
+    assert proc.stop(signal.SIGINT, timeout=5.0) == 0
+    while not all(_gone(pid) for pid in pids.values()):
+        assert time.monotonic() - start < 5.0, f"still running 5 s after Ctrl-C: {pids}"
+        time.sleep(0.05)
+    assert "Traceback" not in "\n".join(proc.err)
 
 
 def test_thirteen_files_of_twelve_shapes_are_covered() -> None:

@@ -1,0 +1,181 @@
+"""Python launch files read in-process: scoping, parameters, --show-args, errors, and the import hook's bounds."""
+
+from __future__ import annotations
+
+import sys
+import textwrap
+from pathlib import Path
+
+import pytest
+
+from robotmodel.errors import LaunchError
+from robotmodel.launch import build_plan
+from robotmodel.launch._pyload import load_python_launch, show_arguments
+
+HEAD = """\
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, GroupAction, IncludeLaunchDescription, OpaqueFunction, TimerAction
+from launch.actions import RegisterEventHandler
+from launch.conditions import IfCondition, LaunchConfigurationEquals, UnlessCondition
+from launch.event_handlers import OnProcessExit, OnProcessStart
+from launch.substitutions import Command, EnvironmentVariable, LaunchConfiguration, PathJoinSubstitution
+from launch.substitutions import PythonExpression, TextSubstitution
+from launch_ros.actions import Node, PushRosNamespace, SetParameter, SetRemap
+from launch_ros.parameter_descriptions import ParameterValue
+from launch_ros.substitutions import FindPackageShare
+"""
+
+
+def write(pkg, name: str, body: str) -> Path:
+    return pkg.launch(name, HEAD + textwrap.dedent(body))
+
+
+def test_groups_scope_configurations_namespace_remaps_and_parameters(pkg) -> None:
+    path = write(pkg, "scopes.launch.py", """
+        def generate_launch_description():
+            rsp = lambda **kw: Node(package='robot_state_publisher', executable='robot_state_publisher', **kw)
+            return LaunchDescription([
+                DeclareLaunchArgument('robot', default_value='r1'),
+                SetRemap('/joint_states', '/all/joint_states'),
+                GroupAction([
+                    PushRosNamespace(LaunchConfiguration('robot')),
+                    SetParameter('use_sim_time', True),
+                    SetRemap('a', 'b'),
+                    DeclareLaunchArgument('inner', default_value='x'),
+                    rsp(name='inside', parameters=[{'robot_description': ParameterValue(Command(
+                        ['xacro ', PathJoinSubstitution([FindPackageShare('probe_description'), 'urdf',
+                                                         'probe.urdf.xacro']), ' prefix:=', LaunchConfiguration('robot'),
+                         '_'])), 'zeros': {'j1': 1, 'j2': 2.5}, 'names': ['a', 'b'], 'mixed': [1, 2.5],
+                        'flag': PythonExpression(["'", LaunchConfiguration('robot'), "' == 'r1'"])}]),
+                ]),
+                rsp(name='outside', namespace='/abs', parameters=[{'robot_description': '<robot name="x"/>',
+                    'text': LaunchConfiguration('inner', default='gone')}]),
+            ])
+    """)
+    launch = load_python_launch(path, {"robot": "r7"}, [pkg.root])
+    inside, outside = launch.nodes
+    assert (inside.name, inside.namespace, outside.name, outside.namespace) == ("inside", "/r7", "outside", "/abs")
+    assert inside.scope_params == (("use_sim_time", "true"),) and outside.scope_params == ()
+    # launch_ros: the scope's rules first (the root's list is shared, so 'a'->'b' outlives the group), then the node's.
+    assert inside.remaps == (("/joint_states", "/all/joint_states"), ("a", "b"))
+    assert outside.remaps == inside.remaps
+    source = inside.params["robot_description"].xacro
+    assert source is not None and source.file == pkg.xacro and source.mappings == (("prefix", "r7_"),)
+    assert {k: inside.params[k].value for k in ("zeros.j1", "zeros.j2", "names", "mixed", "flag")} == {
+        "zeros.j1": "1", "zeros.j2": "2.5", "names": "[a, b]", "mixed": "[1.0, 2.5]", "flag": "false"}
+    # A Python string stays text; the group's argument is gone after it.
+    assert outside.params["robot_description"].value == '<robot name="x"/>'
+    assert outside.params["text"].value == "gone"
+
+
+def test_plan_maps_nodes_and_lists_the_rest_as_skipped(pkg, tmp_path: Path) -> None:
+    path = write(pkg, "plan.launch.py", """
+        def generate_launch_description():
+            gui = LaunchConfiguration('gui')
+            desc = {'robot_description': ParameterValue(Command(['xacro ', str(__import__('pathlib').Path(
+                __file__).parent.parent / 'urdf' / 'probe.urdf.xacro')]), value_type=str)}
+            last = Node(package='robot_state_publisher', executable='robot_state_publisher', parameters=[desc])
+            return LaunchDescription([
+                DeclareLaunchArgument('gui', default_value='true'),
+                RegisterEventHandler(OnProcessExit(target_action=last, on_exit=[
+                    Node(package='controller_manager', executable='spawner', arguments=['jsb'])])),
+                TimerAction(period=2.0, actions=[Node(package='tf2_ros', executable='static_transform_publisher',
+                    arguments=['--frame-id', 'map', '--child-frame-id', 'odom'])]),
+                RegisterEventHandler(OnProcessStart(target_action=last, on_start=[
+                    Node(package='joint_state_publisher', executable='joint_state_publisher',
+                         condition=UnlessCondition(gui))])),
+                Node(package='joint_state_publisher_gui', executable='joint_state_publisher_gui',
+                     condition=IfCondition(gui)),
+                last,
+                OpaqueFunction(function=lambda context: [Node(package='my_pkg', executable='driver',
+                    name=LaunchConfiguration('gui').perform(context) + '_driver')]),
+            ])
+    """)
+    launch = load_python_launch(path, {"gui": "false"}, [pkg.root])
+    plan = build_plan(launch, tmp_path, package_paths=[pkg.root], browser=False)
+    # Deferred actions in launch's order: process starts, timers by period, process exits.
+    assert [p.kind for p in plan.processes] == ["robot_state_publisher", "joint_state_publisher",
+                                                "static_transform_publisher"]
+    assert plan.skipped == ["/false_driver (my_pkg/driver): no robotmodel equivalent, not started",
+                            "/spawner (controller_manager/spawner): no robotmodel equivalent, not started"]
+    assert sum("ordering only" in n for n in plan.notes) == 3
+
+
+def test_show_args_prints_what_ros2_launch_prints(pkg) -> None:
+    path = write(pkg, "args.launch.py", """
+        def generate_launch_description():
+            return LaunchDescription([
+                DeclareLaunchArgument('model', default_value=PathJoinSubstitution([FindPackageShare('probe_description'),
+                                                                                  'urdf', 'probe.urdf.xacro']),
+                                      description='Absolute path to robot urdf file'),
+                DeclareLaunchArgument('gui', default_value='true', choices=['true', 'false']),
+                DeclareLaunchArgument('ns', description='Namespace.', condition=IfCondition('true')),
+                GroupAction([DeclareLaunchArgument('rate', default_value=[LaunchConfiguration('gui'), '0'])]),
+            ])
+    """)
+    assert show_arguments(path, [pkg.root]) == textwrap.dedent("""\
+        Arguments (pass arguments as '<name>:=<value>'):
+
+            'model':
+                Absolute path to robot urdf file
+                (default: PathJoin('FindPackageShare(pkg='probe_description') + 'urdf' + 'probe.urdf.xacro''))
+
+            'gui':
+                One of: ['true', 'false']
+                (default: 'true')
+
+            'ns':*
+                Namespace.
+
+            'rate':
+                no description given
+                (default: LaunchConfig('gui') + '0')
+
+        * argument(s) which are only used if specific conditions occur
+        """)
+
+
+@pytest.mark.parametrize(("body", "args", "message"), [
+    ("return LaunchDescription([DeclareLaunchArgument('ur_type', description='UR series.')])", {},
+     "Included launch description missing required argument 'ur_type' (description: 'UR series.'), given: []"),
+    ("return LaunchDescription([DeclareLaunchArgument('gui', default_value='true', choices=['true', 'false'])])",
+     {"gui": "yes"}, "Argument \"gui\" provided value \"yes\" is not valid. Valid options are: ['true', 'false']"),
+    ("return LaunchDescription([Node(package='p', executable='e', condition=IfCondition('maybe'))])", {},
+     "invalid condition expression, expected one of [true, 1, false, 0] but got 'maybe'"),
+    ("return LaunchDescription([Node(package='p', executable='e', name=LaunchConfiguration('nope'))])", {},
+     "launch configuration 'nope' does not exist"),
+    ("raise ValueError('bad robot')", {}, "Caught exception in launch (see debug for traceback): bad robot"),
+    ("return LaunchDescription([Node(package='p', executable='e', parameters=[{'d': Command('cat /etc/hosts')}])])",
+     {}, "command 'cat /etc/hosts': only xacro commands are run, not 'cat'"),
+])
+def test_bad_input_is_one_line_naming_the_file(pkg, body: str, args: dict[str, str], message: str) -> None:
+    path = write(pkg, "bad.launch.py", f"def generate_launch_description():\n    {body}\n")
+    with pytest.raises(LaunchError) as info:
+        load_python_launch(path, args, [pkg.root])
+    text = str(info.value)
+    assert message in text and text.startswith(str(path)) and "\n" not in text
+
+
+def test_standins_exist_only_during_the_run_and_shadow_a_real_launch(pkg, tmp_path: Path,
+                                                                     monkeypatch: pytest.MonkeyPatch) -> None:
+    # A "real" launch package on sys.path: the run must use the stand-ins, and leave it importable after.
+    real = tmp_path / "site"
+    (real / "launch").mkdir(parents=True)
+    (real / "launch" / "__init__.py").write_text("REAL = True\n")
+    monkeypatch.syspath_prepend(str(real))
+    path = write(pkg, "probe.launch.py", """
+        import launch
+        import ament_index_python.packages as aip
+        SEEN = (hasattr(launch, 'REAL'), aip.get_package_share_directory('probe_description'))
+
+        def generate_launch_description():
+            return LaunchDescription([Node(package='p', executable='e', name='n' + str(SEEN[0]),
+                                           arguments=[SEEN[1]])])
+    """)
+    launch = load_python_launch(path, {}, [pkg.root])
+    assert launch.nodes[0].name == "nFalse" and launch.nodes[0].args == str(pkg.dir)
+    import launch as after  # the real one again
+
+    assert after.REAL is True
+    monkeypatch.delitem(sys.modules, "launch")
+    assert "launch_ros" not in sys.modules and "ament_index_python" not in sys.modules
