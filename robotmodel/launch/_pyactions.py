@@ -1,4 +1,4 @@
-"""launch's description, actions and conditions (``launch``, ``launch.actions``, ``launch.conditions``).
+"""launch's description and actions (``launch``, ``launch.actions``, ``launch.event_handlers``).
 
 They are visited in order, depth first, as launch's service visits what each action returns.
 What launch would run later (``TimerAction``, the ``OnProcessStart``/``OnProcessExit`` handlers
@@ -14,20 +14,16 @@ from pathlib import Path
 from typing import Any
 
 from robotmodel.errors import LaunchError
+from robotmodel.launch._pyconditions import Condition
 from robotmodel.launch._pyctx import Deferred, LaunchContext, user_site
-from robotmodel.launch._pysubst import Substitution, SubstitutionFailure, _text, normalize, perform_all
+from robotmodel.launch._pysubst import Substitution, SubstitutionFailure, normalize, perform_all
 
 __all__ = [
     "Action",
-    "Condition",
     "DeclareLaunchArgument",
     "EmitEvent",
     "ExecuteProcess",
     "GroupAction",
-    "IfCondition",
-    "InvalidConditionExpressionError",
-    "LaunchConfigurationEquals",
-    "LaunchConfigurationNotEquals",
     "LaunchDescription",
     "LogInfo",
     "OnProcessExit",
@@ -41,75 +37,10 @@ __all__ = [
     "Shutdown",
     "ShutdownEvent",
     "TimerAction",
-    "UnlessCondition",
     "UnsetLaunchConfiguration",
     "run_deferred",
     "visit",
 ]
-
-
-class InvalidConditionExpressionError(ValueError):
-    """launch's error for a condition that is neither true/1 nor false/0."""
-
-
-class Condition:
-    """A predicate deciding whether an action runs."""
-
-    def __init__(self, *, predicate: Callable[[LaunchContext], bool] | None = None) -> None:
-        self._predicate = predicate
-
-    def evaluate(self, context: LaunchContext) -> bool:
-        """Whether the action runs."""
-        return bool(self._predicate(context)) if self._predicate is not None else True
-
-
-def evaluate_condition_expression(context: LaunchContext, expression: list[Substitution]) -> bool:
-    """True for 'true'/'1', False for 'false'/'0' (any case, stripped); anything else is an error."""
-    text = perform_all(context, expression).strip().lower()
-    if text in ("true", "1"):
-        return True
-    if text in ("false", "0"):
-        return False
-    raise InvalidConditionExpressionError(
-        f"invalid condition expression, expected one of [true, 1, false, 0] but got '{text}', expanded from "
-        f"'{' + '.join(str(s) for s in expression)}'")
-
-
-class IfCondition(Condition):
-    """Runs the action when the expression is true."""
-
-    def __init__(self, predicate_expression: Any) -> None:
-        subs = normalize(_text(predicate_expression))
-        super().__init__(predicate=lambda c: evaluate_condition_expression(c, subs))
-
-
-class UnlessCondition(Condition):
-    """Runs the action when the expression is false."""
-
-    def __init__(self, predicate_expression: Any) -> None:
-        subs = normalize(_text(predicate_expression))
-        super().__init__(predicate=lambda c: not evaluate_condition_expression(c, subs))
-
-
-class LaunchConfigurationEquals(Condition):
-    """Runs the action when a configuration equals ``expected_value`` (both unset counts as equal)."""
-
-    def __init__(self, launch_configuration_name: str, expected_value: Any) -> None:
-        expected = None if expected_value is None else normalize(_text(expected_value))
-
-        def equal(context: LaunchContext) -> bool:
-            want = None if expected is None else perform_all(context, expected)
-            return context.launch_configurations.get(launch_configuration_name) == want
-
-        super().__init__(predicate=equal)
-
-
-class LaunchConfigurationNotEquals(LaunchConfigurationEquals):
-    """Runs the action unless a configuration equals ``expected_value``."""
-
-    def evaluate(self, context: LaunchContext) -> bool:
-        """The negation."""
-        return not super().evaluate(context)
 
 
 class Action:

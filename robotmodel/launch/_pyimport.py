@@ -24,15 +24,16 @@ _S = "robotmodel.launch._pysubst"
 _R = "robotmodel.launch._pyros"
 _D = "robotmodel.launch._pysources"
 _C = "robotmodel.launch._pyctx"
+_K = "robotmodel.launch._pyconditions"
 _M = "robotmodel.launch._ament"
 
 # module name -> ((implementing module, names), ...): each name exported under the real path
 # ("Name=attr": the implementation's ``attr`` under the name ``Name``).
 MODULES: dict[str, tuple[tuple[str, tuple[str, ...]], ...]] = {
-    "launch": ((_A, ("Action", "Condition", "LaunchDescription")), (_C, ("LaunchContext",)),
+    "launch": ((_A, ("Action", "LaunchDescription")), (_K, ("Condition",)), (_C, ("LaunchContext",)),
                (_S, ("Substitution",)), (_D, ("LaunchDescriptionSource",))),
     "launch.action": ((_A, ("Action",)),),
-    "launch.condition": ((_A, ("Condition",)),),
+    "launch.condition": ((_K, ("Condition",)),),
     "launch.substitution": ((_S, ("Substitution",)),),
     "launch.launch_context": ((_C, ("LaunchContext",)),),
     "launch.launch_description": ((_A, ("LaunchDescription",)),),
@@ -47,7 +48,7 @@ MODULES: dict[str, tuple[tuple[str, tuple[str, ...]], ...]] = {
                                    "NotEqualsSubstitution", "NotSubstitution", "OrSubstitution",
                                    "PathJoinSubstitution", "PythonExpression", "SubstitutionFailure",
                                    "TextSubstitution", "ThisLaunchFile", "ThisLaunchFileDir")),),
-    "launch.conditions": ((_A, ("IfCondition", "InvalidConditionExpressionError", "LaunchConfigurationEquals",
+    "launch.conditions": ((_K, ("IfCondition", "InvalidConditionExpressionError", "LaunchConfigurationEquals",
                                 "LaunchConfigurationNotEquals", "UnlessCondition",
                                 "evaluate_condition_expression")),),
     "launch.launch_description_sources": ((_D, ("AnyLaunchDescriptionSource", "FrontendLaunchDescriptionSource",
