@@ -10,7 +10,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from robotmodel.launch._pyctx import LaunchContext, current
-from robotmodel.launch._pysubst import PackageNotFoundError, find_share
+from robotmodel.launch._pyfind import PackageNotFoundError, find_share
 
 __all__ = ["PackageNotFoundError", "get_package_prefix", "get_package_share_directory", "get_package_share_path"]
 

@@ -25,6 +25,8 @@ _R = "robotmodel.launch._pyros"
 _D = "robotmodel.launch._pysources"
 _C = "robotmodel.launch._pyctx"
 _K = "robotmodel.launch._pyconditions"
+_B = "robotmodel.launch._pybool"
+_F = "robotmodel.launch._pyfind"
 _M = "robotmodel.launch._ament"
 
 # module name -> ((implementing module, names), ...): each name exported under the real path
@@ -43,11 +45,11 @@ MODULES: dict[str, tuple[tuple[str, tuple[str, ...]], ...]] = {
                              "RegisterEventHandler", "SetEnvironmentVariable", "SetLaunchConfiguration", "Shutdown",
                              "TimerAction", "UnsetLaunchConfiguration")),
                        (_D, ("IncludeLaunchDescription",))),
-    "launch.substitutions": ((_S, ("AndSubstitution", "Command", "EnvironmentVariable", "EqualsSubstitution",
-                                   "FindExecutable", "IfElseSubstitution", "LaunchConfiguration",
-                                   "NotEqualsSubstitution", "NotSubstitution", "OrSubstitution",
+    "launch.substitutions": ((_S, ("Command", "EnvironmentVariable", "FindExecutable", "LaunchConfiguration",
                                    "PathJoinSubstitution", "PythonExpression", "SubstitutionFailure",
-                                   "TextSubstitution", "ThisLaunchFile", "ThisLaunchFileDir")),),
+                                   "TextSubstitution", "ThisLaunchFile", "ThisLaunchFileDir")),
+                             (_B, ("AndSubstitution", "EqualsSubstitution", "IfElseSubstitution",
+                                   "NotEqualsSubstitution", "NotSubstitution", "OrSubstitution"))),
     "launch.conditions": ((_K, ("IfCondition", "InvalidConditionExpressionError", "LaunchConfigurationEquals",
                                 "LaunchConfigurationNotEquals", "UnlessCondition",
                                 "evaluate_condition_expression")),),
@@ -60,7 +62,7 @@ MODULES: dict[str, tuple[tuple[str, tuple[str, ...]], ...]] = {
     "launch_ros.actions": ((_R, ("ComposableNodeContainer", "LifecycleNode", "LoadComposableNodes", "Node",
                                  "PushROSNamespace", "PushRosNamespace", "SetParameter", "SetRemap",
                                  "SetUseSimTime")),),
-    "launch_ros.substitutions": ((_S, ("FindPackage", "FindPackagePrefix", "FindPackageShare")),),
+    "launch_ros.substitutions": ((_F, ("FindPackage", "FindPackagePrefix", "FindPackageShare")),),
     "launch_ros.parameter_descriptions": ((_R, ("ParameterFile", "ParameterValue")),),
     "launch_ros.descriptions": ((_R, ("ComposableNode", "ParameterFile", "ParameterValue")),),
     "launch_xml": (),

@@ -16,7 +16,7 @@ from typing import Any
 from robotmodel.errors import LaunchError
 from robotmodel.launch._pyactions import Action, LaunchDescription, SetLaunchConfiguration
 from robotmodel.launch._pyctx import LaunchContext
-from robotmodel.launch._pysubst import Substitution, TextSubstitution, normalize, perform_all
+from robotmodel.launch._pysubst import TextSubstitution, normalize, perform_all
 
 __all__ = [
     "AnyLaunchDescriptionSource",
@@ -27,6 +27,7 @@ __all__ = [
     "XMLLaunchDescriptionSource",
     "YAMLLaunchDescriptionSource",
     "load_python_file",
+    "load_yaml_launch",
 ]
 
 _MAX_DEPTH = 32
@@ -218,6 +219,11 @@ class _Frontend:
         context.notes.extend(loader.notes)
 
 
-def is_substitution(value: Any) -> bool:
-    """Whether ``value`` is a launch substitution."""
-    return isinstance(value, Substitution)
+def load_yaml_launch(path: Path, args: dict[str, str], package_paths: list[Path]) -> Any:
+    """A ROS 2 YAML launch file on its own: its nodes, skips and notes (a :class:`LaunchFile`)."""
+    from robotmodel.launch._loader import LaunchFile
+
+    context = LaunchContext(path.resolve(), package_paths)
+    context.launch_configurations.update(args)
+    _Frontend(context.file).run(context)
+    return LaunchFile(context.nodes, {}, context.skipped, context.notes, tuple(context.found))

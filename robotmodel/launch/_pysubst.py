@@ -1,4 +1,4 @@
-"""launch's substitutions, as description files use them (``launch.substitutions``, launch_ros's package finders).
+"""launch's substitutions, as description files use them (``launch.substitutions``).
 
 Each has launch's ``perform(context)`` and ``describe()`` (what ``--show-args`` prints for a
 default). ``Command`` runs only xacro, expanded in-process once per distinct command line,
@@ -11,26 +11,15 @@ from __future__ import annotations
 import os
 import shutil
 from collections.abc import Iterable
-from pathlib import Path
 from typing import Any
 
-from robotmodel.errors import RobotModelError
 from robotmodel.launch._pyctx import LaunchContext
 
 __all__ = [
-    "AndSubstitution",
     "Command",
     "EnvironmentVariable",
-    "EqualsSubstitution",
     "FindExecutable",
-    "FindPackage",
-    "FindPackagePrefix",
-    "FindPackageShare",
-    "IfElseSubstitution",
     "LaunchConfiguration",
-    "NotEqualsSubstitution",
-    "NotSubstitution",
-    "OrSubstitution",
     "PathJoinSubstitution",
     "PythonExpression",
     "Substitution",
@@ -38,7 +27,6 @@ __all__ = [
     "TextSubstitution",
     "ThisLaunchFile",
     "ThisLaunchFileDir",
-    "find_share",
     "normalize",
     "normalize_to_list_of_substitutions",
     "perform_all",
@@ -259,137 +247,12 @@ class ThisLaunchFile(Substitution):
         return str(context.file)
 
 
-def _truth(text: str) -> bool:
-    word = text.strip().lower()
-    if word in ("true", "1"):
-        return True
-    if word in ("false", "0"):
-        return False
-    raise SubstitutionFailure(f"invalid condition expression, expected one of [true, 1, false, 0] but got '{word}'")
-
-
-class NotSubstitution(Substitution):
-    """``'true'``/``'false'``: the negation."""
-
-    def __init__(self, value: Any) -> None:
-        self.value = normalize(value)
-
-    def perform(self, context: LaunchContext) -> str:
-        """The negated truth."""
-        return str(not _truth(perform_all(context, self.value))).lower()
-
-
-class AndSubstitution(Substitution):
-    """Both true."""
-
-    def __init__(self, left: Any, right: Any) -> None:
-        self.left, self.right = normalize(left), normalize(right)
-
-    def perform(self, context: LaunchContext) -> str:
-        """The conjunction."""
-        values = [_truth(perform_all(context, s)) for s in (self.left, self.right)]
-        return str(all(values)).lower()
-
-
-class OrSubstitution(AndSubstitution):
-    """Either true."""
-
-    def perform(self, context: LaunchContext) -> str:
-        """The disjunction."""
-        values = [_truth(perform_all(context, s)) for s in (self.left, self.right)]
-        return str(any(values)).lower()
-
-
-class EqualsSubstitution(Substitution):
-    """``'true'`` when both sides' text is equal."""
-
-    def __init__(self, left: Any, right: Any) -> None:
-        self.left, self.right = normalize(_text(left)), normalize(_text(right))
-
-    def perform(self, context: LaunchContext) -> str:
-        """The comparison."""
-        return str(perform_all(context, self.left) == perform_all(context, self.right)).lower()
-
-
-class NotEqualsSubstitution(EqualsSubstitution):
-    """``'true'`` when both sides' text differs."""
-
-    def perform(self, context: LaunchContext) -> str:
-        """The comparison."""
-        return str(perform_all(context, self.left) != perform_all(context, self.right)).lower()
-
-
-class IfElseSubstitution(Substitution):
-    """``if_value`` when ``condition`` is true, else ``else_value``."""
-
-    def __init__(self, condition: Any, if_value: Any = "", else_value: Any = "") -> None:
-        self.condition = normalize(condition)
-        self.if_value, self.else_value = normalize(if_value), normalize(else_value)
-
-    def perform(self, context: LaunchContext) -> str:
-        """The chosen value."""
-        chosen = self.if_value if _truth(perform_all(context, self.condition)) else self.else_value
-        return perform_all(context, chosen)
-
-
 def _text(value: Any) -> Any:
     if isinstance(value, bool):
         return str(value).lower()
     if isinstance(value, int | float):
         return str(value)
     return value
-
-
-class FindPackageShare(Substitution):
-    """launch_ros's: the share folder of a package (source or install layout; ``--package-path`` first)."""
-
-    def __init__(self, package: Any) -> None:
-        self.package = normalize(package)
-
-    def perform(self, context: LaunchContext) -> str:
-        """The package's folder."""
-        return find_share(context, perform_all(context, self.package))
-
-    def describe(self) -> str:
-        """``FindPackageShare(pkg='name')``."""
-        return f"{type(self).__name__}(pkg={_describe(self.package)})"
-
-
-class FindPackagePrefix(FindPackageShare):
-    """launch_ros's: the install prefix of a package (its folder in a source tree)."""
-
-    def perform(self, context: LaunchContext) -> str:
-        """The package's prefix."""
-        share = Path(find_share(context, perform_all(context, self.package)))
-        return str(share.parent.parent) if share.parent.name == "share" else str(share)
-
-
-def find_share(context: LaunchContext, package: str) -> str:
-    """The folder of ``package`` as the XML launcher finds it; not found raises launch_ros's error."""
-    from robotmodel.resources import find_package
-
-    try:
-        root = find_package(package, start=context.file, package_paths=context.package_paths)
-    except RobotModelError as exc:
-        raise PackageNotFoundError(f"\"package '{package}' not found, searching: {_searched(exc)}\"") from None
-    context.found[root] = None
-    return str(root)
-
-
-def _searched(exc: RobotModelError) -> str:
-    text = " ".join(str(exc).splitlines())
-    return text.split("searched ", 1)[-1] if "searched " in text else text
-
-
-class PackageNotFoundError(KeyError):
-    """ament_index_python's: no package of that name (a KeyError, as there)."""
-
-    def __str__(self) -> str:
-        return str(self.args[0]).strip('"') if self.args else ""
-
-
-class FindPackage(FindPackagePrefix):
-    """launch_ros's older name: the package's prefix."""
 
 
 def normalize_to_list_of_substitutions(subs: Any) -> list[Substitution]:

@@ -49,7 +49,8 @@ def run_launch(target: str, file: str | None = None, mappings: Mapping[str, str]
     puts them there, and the nodes read robot_description from it. Prints the notes and
     skipped nodes, then (unless ``dry_run``, which prints the command lines) runs the
     processes until SIGINT/SIGTERM, a required exit or all exits. A Python launch file
-    (``*.py``) runs as ``ros2 launch`` runs it (:mod:`robotmodel.launch._pyload`);
+    (``*.py``) runs as ``ros2 launch`` runs it (:mod:`robotmodel.launch._pyload`), a
+    ROS 2 YAML one (``*.yaml``) is read as its XML equivalent;
     ``show_args`` prints its arguments instead, as ``ros2 launch --show-args``. Bad input raises
     :class:`robotmodel.errors.LaunchError`. Returns the exit code.
     """
@@ -79,6 +80,10 @@ def run_launch(target: str, file: str | None = None, mappings: Mapping[str, str]
         launch = load_python_launch(path, dict(mappings or {}), paths)
     elif show_args:
         raise LaunchError(f"{path}: --show-args reads Python launch files (.launch.py)")
+    elif path.name.endswith((".yaml", ".yml")):
+        from robotmodel.launch._pysources import load_yaml_launch
+
+        launch = load_yaml_launch(path, dict(mappings or {}), paths)
     else:
         launch = load_launch_file(path, dict(mappings or {}), paths)
     ros1 = ros1_wire()

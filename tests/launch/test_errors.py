@@ -165,12 +165,12 @@ def test_python_launch_file_without_generate_launch_description_is_one_line(pkg,
                    "'generate_launch_description()'"]
 
 
-def test_yaml_launch_file_on_its_own_is_refused_in_one_line(pkg, capsys):
-    path = pkg.launch("display.launch.yaml", "launch: []\n")
+def test_yaml_launch_file_missing_an_argument_is_one_line(pkg, capsys):
+    path = pkg.launch("display.launch.yaml", "launch:\n- arg:\n    name: model\n")
     code, err, _ = run_cli(capsys, str(path))
     assert code == 1
-    assert err == [f"robotmodel launch: error: {path}: not an XML launch file (.launch, .launch.xml, .xml): Python "
-                   "launch files are run on their own, YAML ones only when a Python launch file includes them"]
+    assert err == [f"robotmodel launch: error: {path}:2: Included launch description missing required argument "
+                   "'model' (description: 'no description given'), given: []"]
 
 
 def test_deeply_nested_substitutions_and_groups_are_errors(pkg, capsys):

@@ -179,3 +179,43 @@ def test_standins_exist_only_during_the_run_and_shadow_a_real_launch(pkg, tmp_pa
     assert after.REAL is True
     monkeypatch.delitem(sys.modules, "launch")
     assert "launch_ros" not in sys.modules and "ament_index_python" not in sys.modules
+
+
+def test_yaml_launch_file_on_its_own_reads_as_its_xml_equivalent(pkg) -> None:
+    from robotmodel.launch._pysources import load_yaml_launch
+
+    path = pkg.launch("display.launch.yaml", f"""
+        launch:
+        - arg:
+            name: gui
+            default: "false"
+        - group:
+            children:
+            - push-ros-namespace:
+                namespace: arm
+            - node:
+                pkg: robot_state_publisher
+                exec: robot_state_publisher
+                param:
+                - name: robot_description
+                  value: $(command 'xacro {pkg.xacro} prefix:=y_')
+                - name: zeros
+                  param:
+                  - name: y_shoulder
+                    value: 0.5
+                remap:
+                - from: joint_states
+                  to: /all_states
+        - node:
+            pkg: joint_state_publisher_gui
+            exec: joint_state_publisher_gui
+            if: $(var gui)
+    """)
+    launch = load_yaml_launch(path, {"gui": "true"}, [pkg.root])
+    rsp, gui = launch.nodes
+    assert (rsp.namespace, gui.namespace, gui.line) == ("/arm", "/", 22)  # the "- node:" line
+    assert rsp.params["robot_description"].xacro is not None
+    assert rsp.params["robot_description"].xacro.mappings == (("prefix", "y_"),)
+    assert rsp.params["zeros.y_shoulder"].value == "0.5"
+    assert rsp.remaps == (("joint_states", "/all_states"),)
+    assert load_yaml_launch(path, {}, [pkg.root]).nodes[1:] == []
