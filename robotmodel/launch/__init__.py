@@ -26,9 +26,10 @@ Bad input raises :class:`robotmodel.errors.LaunchError` starting with ``FILE:LIN
 
 from __future__ import annotations
 
+from robotmodel.launch._files import load_launch_file
 from robotmodel.launch._find import find_launch_file
 from robotmodel.launch._kinds import build_plan
-from robotmodel.launch._loader import LaunchFile, load_launch_file
+from robotmodel.launch._loader import LaunchFile
 from robotmodel.launch._model import Dialect, LaunchPlan, NodeDecl, Param, ProcessSpec, XacroSource
 from robotmodel.launch._run import run_launch, run_processes
 

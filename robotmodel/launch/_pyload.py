@@ -14,37 +14,24 @@ line it came through, in ``ros2 launch``'s words.
 
 from __future__ import annotations
 
-import traceback
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 
 from robotmodel.errors import LaunchError
 from robotmodel.launch._loader import LaunchFile
+from robotmodel.launch._pysources import error_site, error_text
 
 __all__ = ["load_python_launch", "show_arguments"]
 
 
 def load_python_launch(path: Path, args: Mapping[str, str], package_paths: Sequence[Path] = ()) -> LaunchFile:
     """Run Python launch file ``path`` with command-line ``args``; the nodes it declares, skips and notes."""
-    from robotmodel.launch._pyactions import run_deferred, visit
-    from robotmodel.launch._pyctx import LaunchContext, using
-    from robotmodel.launch._pyimport import standins
-    from robotmodel.launch._pysources import IncludeLaunchDescription, PythonLaunchDescriptionSource
+    from robotmodel.launch._pyctx import LaunchContext
+    from robotmodel.launch._pysources import run_python
 
     path = path.resolve()
     context = LaunchContext(path, package_paths)
-    with standins(), using(context):
-        try:
-            visit(IncludeLaunchDescription(PythonLaunchDescriptionSource(str(path)),
-                                           launch_arguments=list(args.items())), context)
-            run_deferred(context)
-        except LaunchError:
-            raise
-        except RecursionError:
-            raise LaunchError(f"{path}: launch entities nested too deep") from None
-        except (Exception, SystemExit) as exc:
-            raise LaunchError(f"{_site(exc, context.file)}: Caught exception in launch (see debug for traceback): "
-                              f"{_text(exc)}") from None
+    run_python(context, path, args)
     return LaunchFile(context.nodes, {}, context.skipped, context.notes, tuple(context.found))
 
 
@@ -62,8 +49,8 @@ def show_arguments(path: Path, package_paths: Sequence[Path] = ()) -> str:
         except LaunchError:
             raise
         except (Exception, SystemExit) as exc:
-            raise LaunchError(f"{_site(exc, path)}: Caught exception when trying to load file of format [py]: "
-                              f"{_text(exc)}") from None
+            raise LaunchError(f"{error_site(exc, path)}: Caught exception when trying to load file of format [py]: "
+                              f"{error_text(exc)}") from None
     lines = ["Arguments (pass arguments as '<name>:=<value>'):"]
     conditional = False
     for argument in arguments:
@@ -77,24 +64,3 @@ def show_arguments(path: Path, package_paths: Sequence[Path] = ()) -> str:
     elif conditional:
         lines.append("\n* argument(s) which are only used if specific conditions occur")
     return "\n".join(lines) + "\n"
-
-
-def _text(exc: BaseException) -> str:
-    text = " ".join(str(exc).split())
-    return text or type(exc).__name__
-
-
-def _site(exc: BaseException, fallback: Path) -> str:
-    """``FILE:LINE`` of the innermost traceback frame outside robotmodel and the standard library."""
-    import sys
-
-    here = Path(__file__).resolve().parent
-    system = [Path(p) for p in {sys.prefix, sys.base_prefix, sys.exec_prefix}]
-    found = f"{fallback}"
-    for frame in traceback.extract_tb(exc.__traceback__):
-        path = Path(frame.filename)
-        if frame.filename.startswith("<") or path.parent == here or "site-packages" in path.parts:
-            continue
-        if not any(path.is_relative_to(p) for p in system):
-            found = f"{path}:{frame.lineno}"
-    return found

@@ -10,6 +10,8 @@ from __future__ import annotations
 
 import importlib.util
 import itertools
+import traceback
+from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
@@ -26,8 +28,12 @@ __all__ = [
     "PythonLaunchDescriptionSource",
     "XMLLaunchDescriptionSource",
     "YAMLLaunchDescriptionSource",
+    "error_site",
+    "error_text",
+    "include_python",
     "load_python_file",
     "load_yaml_launch",
+    "run_python",
 ]
 
 _MAX_DEPTH = 32
@@ -201,12 +207,13 @@ class _Frontend:
         self.path = path
 
     def run(self, context: LaunchContext) -> None:
-        from robotmodel.launch._loader import _Loader, _Scope
+        from robotmodel.launch._loader import _Loader
         from robotmodel.launch._model import Dialect
+        from robotmodel.launch._readbase import _Scope
         from robotmodel.launch._xml import parse_file
         from robotmodel.launch._yamlfront import parse_yaml_file
 
-        loader = _Loader(context.package_paths)
+        loader = _Loader(context.package_paths, include_python)
         loader.found = context.found
         yaml_file = self.path.name.endswith((".yaml", ".yml"))
         root = parse_yaml_file(self.path) if yaml_file else parse_file(self.path)
@@ -227,3 +234,63 @@ def load_yaml_launch(path: Path, args: dict[str, str], package_paths: list[Path]
     context.launch_configurations.update(args)
     _Frontend(context.file).run(context)
     return LaunchFile(context.nodes, {}, context.skipped, context.notes, tuple(context.found))
+
+
+def include_python(loader: Any, path: Path, scope: Any, given: Mapping[str, str], ns: str) -> None:
+    """A ROS 2 XML file's ``<include>`` of Python launch file ``path``, run in the includer's scope.
+
+    The included file shares the includer's launch configurations, ``<set_remap>`` and
+    ``<set_parameter>`` lists (an include is not scoped); what it declares joins ``loader``'s.
+    """
+    from robotmodel.launch._pyctx import Frame
+
+    context = LaunchContext(scope.path, loader.package_paths)
+    context.found = loader.found
+    context.frame = Frame(scope.args, ns if ns != "/" else None, scope.remaps, scope.params)
+    context.depth = scope.depth + 1
+    run_python(context, path.resolve(), given)
+    loader.nodes.extend(context.nodes)
+    loader.skipped.extend(context.skipped)
+    loader.notes.extend(context.notes)
+
+
+def run_python(context: Any, path: Path, args: Mapping[str, str]) -> None:
+    """Include Python launch file ``path`` with ``args`` into ``context`` and run what it defers."""
+    from robotmodel.launch._pyactions import run_deferred, visit
+    from robotmodel.launch._pyctx import using
+    from robotmodel.launch._pyimport import standins
+
+    with standins(), using(context):
+        try:
+            visit(IncludeLaunchDescription(PythonLaunchDescriptionSource(str(path)),
+                                           launch_arguments=list(args.items())), context)
+            run_deferred(context)
+        except LaunchError:
+            raise
+        except RecursionError:
+            raise LaunchError(f"{path}: launch entities nested too deep") from None
+        except (Exception, SystemExit) as exc:
+            raise LaunchError(f"{error_site(exc, context.file)}: Caught exception in launch (see debug for traceback): "
+                              f"{error_text(exc)}") from None
+
+
+def error_text(exc: BaseException) -> str:
+    """An exception as one line (its type when it has no text)."""
+    text = " ".join(str(exc).split())
+    return text or type(exc).__name__
+
+
+def error_site(exc: BaseException, fallback: Path) -> str:
+    """``FILE:LINE`` of the innermost traceback frame outside robotmodel and the standard library."""
+    import sys
+
+    here = Path(__file__).resolve().parent
+    system = [Path(p) for p in {sys.prefix, sys.base_prefix, sys.exec_prefix}]
+    found = f"{fallback}"
+    for frame in traceback.extract_tb(exc.__traceback__):
+        path = Path(frame.filename)
+        if frame.filename.startswith("<") or path.parent == here or "site-packages" in path.parts:
+            continue
+        if not any(path.is_relative_to(p) for p in system):
+            found = f"{path}:{frame.lineno}"
+    return found

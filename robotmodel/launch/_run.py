@@ -59,9 +59,9 @@ def run_launch(target: str, file: str | None = None, mappings: Mapping[str, str]
     from pathlib import Path
 
     from robotmodel.errors import LaunchError
+    from robotmodel.launch._files import load_launch_file
     from robotmodel.launch._find import find_launch_file
     from robotmodel.launch._kinds import build_plan
-    from robotmodel.launch._loader import load_launch_file
     from robotmodel.rcl import ros1_wire
 
     paths = [Path(p).resolve() for p in package_paths]

@@ -219,3 +219,39 @@ def test_yaml_launch_file_on_its_own_reads_as_its_xml_equivalent(pkg) -> None:
     assert rsp.params["zeros.y_shoulder"].value == "0.5"
     assert rsp.remaps == (("joint_states", "/all_states"),)
     assert load_yaml_launch(path, {}, [pkg.root]).nodes[1:] == []
+
+
+def test_ros2_xml_includes_python_and_yaml_launch_files_in_its_scope(pkg) -> None:
+    from robotmodel.launch import load_launch_file
+
+    write(pkg, "rsp.launch.py", """
+        def generate_launch_description():
+            return LaunchDescription([
+                DeclareLaunchArgument('prefix'),
+                Node(package='robot_state_publisher', executable='robot_state_publisher', name='rsp_py',
+                     parameters=[{'frame_prefix': LaunchConfiguration('prefix')}]),
+            ])
+    """)
+    pkg.launch("jsp.launch.yaml", """
+        launch:
+        - node:
+            pkg: joint_state_publisher
+            exec: joint_state_publisher
+            name: jsp_yaml
+    """)
+    top = pkg.launch("top.launch.xml", """
+        <launch>
+          <set_remap from="joint_states" to="/arm/joint_states"/>
+          <group>
+            <push-ros-namespace namespace="arm"/>
+            <include file="$(dirname)/rsp.launch.py"><arg name="prefix" value="a/"/></include>
+            <include file="$(dirname)/jsp.launch.yaml"/>
+          </group>
+        </launch>
+    """)
+    rsp, jsp = load_launch_file(top, {}, [pkg.root]).nodes
+    assert (rsp.full_name, rsp.params["frame_prefix"].value, jsp.full_name) == ("/arm/rsp_py", "a/", "/arm/jsp_yaml")
+    assert rsp.remaps == jsp.remaps == (("joint_states", "/arm/joint_states"),)
+    ros1 = pkg.launch("top.launch", '<launch><include file="$(find probe_description)/launch/rsp.launch.py"/></launch>')
+    assert load_launch_file(ros1, {}, [pkg.root]).skipped == [
+        f"<include> {pkg.dir / 'launch' / 'rsp.launch.py'} ({ros1}:1): roslaunch reads only XML launch files"]
