@@ -87,21 +87,42 @@ class LaunchDescription:
 
     def get_launch_arguments(self, conditional_inclusion: bool = False) -> list[DeclareLaunchArgument]:
         """The arguments it declares, includes known without running too; the first of each name (launch's rule)."""
-        found: list[DeclareLaunchArgument] = []
+        return [arg for arg, _ in self.get_launch_arguments_with_include_launch_description_actions(
+            conditional_inclusion)]
 
-        def walk(entities: Iterable[Any], conditional: bool, depth: int) -> None:
+    def get_launch_arguments_with_include_launch_description_actions(
+            self, conditional_inclusion: bool = False) -> list[tuple[DeclareLaunchArgument, list[Any] | None]]:
+        """Each declared argument with the includes it sits under (None: declared here), as launch finds them.
+
+        The walk stops at a group that resets the configurations (``forwarding=False``): the
+        arguments after it cannot be set from outside.
+        """
+        found: list[tuple[DeclareLaunchArgument, list[Any] | None]] = []
+
+        def walk(entities: Iterable[Any], conditional: bool, includes: list[Any] | None, depth: int) -> bool:
             if depth > 32:
-                return
+                return False
             for entity in entities:
-                if isinstance(entity, DeclareLaunchArgument) and entity.name not in (e.name for e in found):
+                if isinstance(entity, DeclareLaunchArgument) and entity.name not in (e.name for e, _ in found):
                     entity.conditionally_included = conditional or entity.condition is not None
-                    found.append(entity)
+                    found.append((entity, includes))
+                if isinstance(entity, _ResetLaunchConfigurations):
+                    return True
+                nested = includes
+                if hasattr(entity, "launch_arguments") and isinstance(entity, Action):  # an include
+                    nested = [*(includes or []), entity]
                 if isinstance(entity, LaunchDescription):
-                    walk(entity.entities, conditional, depth + 1)
+                    stop = walk(entity.entities, conditional, nested, depth + 1)
                 elif isinstance(entity, Action):
-                    walk(entity.get_sub_entities(), conditional or entity.condition is not None, depth + 1)
+                    stop = walk(entity.get_sub_entities(), conditional or entity.condition is not None, nested,
+                                depth + 1)
+                else:
+                    stop = False
+                if stop:
+                    return True
+            return False
 
-        walk(self.entities, conditional_inclusion, 0)
+        walk(self.entities, conditional_inclusion, None, 0)
         return found
 
 

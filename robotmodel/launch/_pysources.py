@@ -152,6 +152,15 @@ class IncludeLaunchDescription(Action):
         except Exception:
             return []
 
+    def static_argument_names(self) -> list[str]:
+        """The names of its launch arguments that need no context (text only)."""
+        names = []
+        for key, _ in self.launch_arguments:
+            subs = normalize(key)
+            if all(isinstance(s, TextSubstitution) for s in subs):
+                names.append("".join(s.text for s in subs if isinstance(s, TextSubstitution)))
+        return names
+
     def execute(self, context: LaunchContext) -> list[Any]:
         """Load it, check its required arguments, set the given ones, then visit it."""
         if context.depth >= _MAX_DEPTH:
@@ -171,11 +180,17 @@ class IncludeLaunchDescription(Action):
             _Frontend(path).run(context)
             return []
         description = load_python_file(path)
-        for argument in description.get_launch_arguments():
-            if argument.conditionally_included or argument.default_value is not None or argument.name in names:
+        known = list(names)
+        for argument, includes in description.get_launch_arguments_with_include_launch_description_actions():
+            if argument.conditionally_included or argument.default_value is not None:
                 continue
-            raise LaunchError(f"{path}: Included launch description missing required argument '{argument.name}' "
-                              f"(description: '{argument.description}'), given: [{', '.join(names)}]")
+            # launch's best effort: the names nested includes pass (where known without running) count too.
+            for include in includes or []:
+                known.extend(include.static_argument_names())
+            if argument.name not in known:
+                raise LaunchError(f"{path}: Included launch description missing required argument "
+                                  f"'{argument.name}' (description: '{argument.description}'), given: "
+                                  f"[{', '.join(known)}]")
         return [_Enter(path), *(SetLaunchConfiguration(k, v) for k, v in zip(names, values, strict=True)),
                 description, _Leave(context.file)]
 

@@ -255,3 +255,24 @@ def test_ros2_xml_includes_python_and_yaml_launch_files_in_its_scope(pkg) -> Non
     ros1 = pkg.launch("top.launch", '<launch><include file="$(find probe_description)/launch/rsp.launch.py"/></launch>')
     assert load_launch_file(ros1, {}, [pkg.root]).skipped == [
         f"<include> {pkg.dir / 'launch' / 'rsp.launch.py'} ({ros1}:1): roslaunch reads only XML launch files"]
+
+
+def test_a_static_include_passing_a_required_argument_is_accepted_and_shown(pkg) -> None:
+    write(pkg, "inner.launch.py", """
+        def generate_launch_description():
+            return LaunchDescription([
+                DeclareLaunchArgument('robot', description='Which robot.'),
+                Node(package='robot_state_publisher', executable='robot_state_publisher',
+                     name=LaunchConfiguration('robot')),
+            ])
+    """)
+    outer = write(pkg, "outer.launch.py", """
+        import os
+
+        def generate_launch_description():
+            inner = os.path.join(os.path.dirname(__file__), 'inner.launch.py')
+            return LaunchDescription([IncludeLaunchDescription(inner, launch_arguments={'robot': 'r2'}.items())])
+    """)
+    # ros2 launch counts the names a statically known nested include passes (launch's best effort).
+    assert [n.name for n in load_python_launch(outer, {}, [pkg.root]).nodes] == ["r2"]
+    assert "'robot':\n        Which robot." in show_arguments(outer, [pkg.root])
