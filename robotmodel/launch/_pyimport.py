@@ -96,6 +96,11 @@ class _Finder(MetaPathFinder, Loader):
             for entry in names:
                 name, _, attribute = entry.partition("=")
                 setattr(module, name, getattr(implementation, attribute or name))
+        # The real packages import their submodules, so `import launch` then `launch.actions.X` works.
+        prefix = module.__name__ + "."
+        for child in MODULES:
+            if child.startswith(prefix) and "." not in child[len(prefix):]:
+                setattr(module, child[len(prefix):], importlib.import_module(child))
 
 
 def _ours(name: str) -> bool:

@@ -276,3 +276,20 @@ def test_a_static_include_passing_a_required_argument_is_accepted_and_shown(pkg)
     # ros2 launch counts the names a statically known nested include passes (launch's best effort).
     assert [n.name for n in load_python_launch(outer, {}, [pkg.root]).nodes] == ["r2"]
     assert "'robot':\n        Which robot." in show_arguments(outer, [pkg.root])
+
+
+def test_the_dotted_style_of_older_launch_files_works(pkg) -> None:
+    path = pkg.launch("dotted.launch.py", """
+        import launch
+        import launch_ros
+
+
+        def generate_launch_description():
+            return launch.LaunchDescription([
+                launch.actions.DeclareLaunchArgument(name='gui', default_value='False'),
+                launch_ros.actions.Node(package='joint_state_publisher', executable='joint_state_publisher',
+                                        condition=launch.conditions.UnlessCondition(
+                                            launch.substitutions.LaunchConfiguration('gui'))),
+            ])
+    """)
+    assert [n.executable for n in load_python_launch(path, {}, [pkg.root]).nodes] == ["joint_state_publisher"]
