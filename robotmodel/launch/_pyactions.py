@@ -9,6 +9,7 @@ and a note says so.
 
 from __future__ import annotations
 
+import os
 from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any
@@ -20,14 +21,18 @@ from robotmodel.launch._pysubst import Substitution, SubstitutionFailure, normal
 
 __all__ = [
     "Action",
+    "AppendEnvironmentVariable",
     "DeclareLaunchArgument",
     "EmitEvent",
     "ExecuteProcess",
     "GroupAction",
     "LaunchDescription",
     "LogInfo",
+    "OnExecutionComplete",
     "OnProcessExit",
+    "OnProcessIO",
     "OnProcessStart",
+    "OnShutdown",
     "OpaqueFunction",
     "PopLaunchConfigurations",
     "PushLaunchConfigurations",
@@ -37,6 +42,7 @@ __all__ = [
     "Shutdown",
     "ShutdownEvent",
     "TimerAction",
+    "UnsetEnvironmentVariable",
     "UnsetLaunchConfiguration",
     "run_deferred",
     "visit",
@@ -296,7 +302,7 @@ class RegisterEventHandler(Action):
     def execute(self, context: LaunchContext) -> None:
         """Defer its actions."""
         handler = self.event_handler
-        if not isinstance(handler, OnProcessStart | OnProcessExit):
+        if not isinstance(handler, OnProcessStart | OnProcessExit) or handler.rank < 0:
             context.notes.append(f"{self.where()}: {type(handler).__name__} event handler ignored")
             return
         entities = handler.entities
@@ -358,6 +364,51 @@ class Shutdown(EmitEvent):
 
     def __init__(self, *, reason: str = "reason not given", **kwargs: Any) -> None:
         super().__init__(event=ShutdownEvent(reason=reason), **kwargs)
+
+
+class AppendEnvironmentVariable(Action):
+    """Append (or ``prepend``) to a variable for ``EnvironmentVariable``, joined by ``separator``."""
+
+    def __init__(self, name: Any, value: Any, *, prepend: bool = False, separator: str = os.pathsep,
+                 **kwargs: Any) -> None:
+        super().__init__(**kwargs)
+        self.name, self.value, self.prepend, self.separator = normalize(name), normalize(value), prepend, separator
+
+    def execute(self, context: LaunchContext) -> None:
+        """Extend it."""
+        name, value = perform_all(context, self.name), perform_all(context, self.value)
+        old = context.environment[name] if name in context.environment else os.environ.get(name)
+        parts = [value, old] if self.prepend else [old, value]
+        context.environment[name] = self.separator.join(p for p in parts if p)
+
+
+class UnsetEnvironmentVariable(Action):
+    """Unset a variable for ``EnvironmentVariable``."""
+
+    def __init__(self, name: Any, **kwargs: Any) -> None:
+        super().__init__(**kwargs)
+        self.name = normalize(name)
+
+    def execute(self, context: LaunchContext) -> None:
+        """Unset it."""
+        context.environment[perform_all(context, self.name)] = None
+
+
+class OnExecutionComplete(OnProcessStart):
+    """An action's completion: not an event here (the handler is noted and ignored)."""
+
+    def __init__(self, **kwargs: Any) -> None:
+        super().__init__()
+        del kwargs
+        self.rank, self.what = -1, "OnExecutionComplete"
+
+
+class OnShutdown(OnExecutionComplete):
+    """The launch's shutdown: not an event here (the handler is noted and ignored)."""
+
+
+class OnProcessIO(OnExecutionComplete):
+    """A process's output: not an event here (the handler is noted and ignored)."""
 
 
 class ExecuteProcess(Action):

@@ -22,6 +22,7 @@ __all__ = [
     "LaunchConfiguration",
     "PathJoinSubstitution",
     "PythonExpression",
+    "SomeSubstitutionsType",
     "Substitution",
     "SubstitutionFailure",
     "TextSubstitution",
@@ -54,6 +55,10 @@ class Substitution:
 
     def __truediv__(self, other: Any) -> PathJoinSubstitution:
         return PathJoinSubstitution([self, other])
+
+
+#: launch's type of what a substitution argument accepts (text, a substitution, or a list of them).
+SomeSubstitutionsType = Any
 
 
 def normalize(value: Any) -> list[Substitution]:

@@ -293,3 +293,23 @@ def test_the_dotted_style_of_older_launch_files_works(pkg) -> None:
             ])
     """)
     assert [n.executable for n in load_python_launch(path, {}, [pkg.root]).nodes] == ["joint_state_publisher"]
+
+
+def test_environment_actions_and_other_event_handlers(pkg, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv("RM_TEST_PATH", "/a")
+    path = write(pkg, "env.launch.py", """
+        from launch.actions import AppendEnvironmentVariable, SetEnvironmentVariable
+        from launch.event_handlers import OnShutdown
+
+        def generate_launch_description():
+            return LaunchDescription([
+                AppendEnvironmentVariable('RM_TEST_PATH', '/b'),
+                SetEnvironmentVariable('RM_TEST_NAME', 'r'),
+                RegisterEventHandler(OnShutdown(on_shutdown=[])),
+                Node(package='p', executable='e', name=EnvironmentVariable('RM_TEST_NAME'),
+                     arguments=[EnvironmentVariable('RM_TEST_PATH')]),
+            ])
+    """)
+    launch = load_python_launch(path, {}, [pkg.root])
+    assert (launch.nodes[0].name, launch.nodes[0].args) == ("r", "/a:/b")
+    assert any("OnShutdown event handler ignored" in n for n in launch.notes)
