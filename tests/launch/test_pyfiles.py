@@ -47,6 +47,7 @@ class Case:
     corpus: bool = False
     processes: tuple[str, ...] = ("joint_state_publisher", "robot_state_publisher")
     env: tuple[tuple[str, str], ...] = field(default=())
+    absent: tuple[str, ...] = ()  # links the arguments remove
 
 
 UR = "{corpus}/Universal_Robots_ROS2_Description/ur_description/urdf/ur.urdf.xacro"
@@ -71,7 +72,8 @@ CASES = {
                                      (("namespace", "tb3_0/"),), corpus=True, env=(("TURTLEBOT3_MODEL", "burger"),)),
     "franka-visualize-no-gripper": Case("franka_view", "visualize_franka.launch.py", ("load_gripper:=false",),
                                         "{corpus}/franka_description/franka_description/robots/fer/fer.urdf.xacro",
-                                        (("hand", "false"), ("ee_id", "franka_hand")), corpus=True),
+                                        (("hand", "false"), ("ee_id", "franka_hand")), corpus=True,
+                                        absent=("fer_hand", "fer_leftfinger")),
     "kinova-view_robot-prefix": Case("kinova_view", "view_robot.launch.py", ("prefix:=k1/",),
                                      "{erd}/robots/kinova_description/robots/kinova.urdf", prefix="k1/"),
     "xarm-display-prefix": Case("xarm_view", "xarm7_display.launch.py", ("prefix:=L_",),
@@ -111,6 +113,28 @@ def expected_links(case: Case, ws: Path) -> list[str]:
 
     text = expand(_path(case.urdf, ws), dict(case.mappings), package_paths=[CORPUS] if case.corpus else [])
     return [case.prefix + link.get("name", "") for link in ET.fromstring(text).iter("link")]
+
+
+def zero_joints(case: Case, ws: Path) -> list[tuple[str, str, tuple[float, ...]]]:
+    """(parent, child, origin xyz) of each joint published at 0: fixed ones, and movable ones
+    joint_state_publisher starts at 0 (0 within the limits, no mimic). Their TF is the joint's origin."""
+    from robotmodel.xacro import expand
+
+    tree = ET.fromstring(expand(_path(case.urdf, ws), dict(case.mappings),
+                                package_paths=[CORPUS] if case.corpus else []))
+    out = []
+    for joint in tree.findall("joint"):  # not the <joint>s of <transmission>s
+        kind, limit, origin = joint.get("type"), joint.find("limit"), joint.find("origin")
+        if kind in ("floating", "planar") or joint.find("mimic") is not None:
+            continue
+        if kind in ("revolute", "prismatic") and limit is not None and not (
+                float(limit.get("lower", 0)) <= 0 <= float(limit.get("upper", 0))):
+            continue
+        xyz = tuple(float(v) for v in (origin.get("xyz", "0 0 0") if origin is not None else "0 0 0").split())
+        parent, child = joint.find("parent"), joint.find("child")
+        assert parent is not None and child is not None
+        out.append((case.prefix + parent.get("link", ""), case.prefix + child.get("link", ""), xyz))
+    return out
 
 
 def root_link(case: Case, ws: Path) -> str:
@@ -188,6 +212,12 @@ def _bring_up(live: Bus, case: Case, ws: Path, links: list[str], root: str) -> N
             if missing:
                 time.sleep(0.1)
         assert not missing, f"not on /tf or /tf_static within 60 s: {missing}\n{buffer.all_frames_as_string()}"
+        # The arguments changed the robot as the URDF says: each joint at 0 sits at its origin.
+        for parent, child, xyz in zero_joints(case, ws):
+            t = buffer.lookup_transform(parent, child, Time()).transform.translation
+            assert (t.x, t.y, t.z) == pytest.approx(xyz, abs=1e-6), (parent, child)
+        frames = buffer.all_frames_as_string()
+        assert not [f for f in case.absent if f"Frame {f} " in frames], frames
     start = time.monotonic()
     assert proc.stop(signal.SIGINT, timeout=5.0) == 0
     while not all(_gone(pid) for pid in pids.values()):
