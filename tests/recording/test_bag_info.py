@@ -153,3 +153,13 @@ def test_not_a_recording_is_one_line(tmp_path: Path) -> None:
     assert proc.returncode == 1
     assert proc.stderr.splitlines() == [f"robotmodel bag: error: {path}: not a recording (neither a ROS 1 bag, "
                                         "an MCAP file nor a ROS 2 sqlite3 bag)"]
+
+
+def test_bag_record_is_record() -> None:
+    from robotmodel.cli.main import build_parser
+
+    parser = build_parser()
+    bag = vars(parser.parse_args(["bag", "record", "-a", "-O", "run", "/tf", "--flush-interval", "0.5"]))
+    plain = vars(parser.parse_args(["record", "-a", "-O", "run", "/tf", "--flush-interval", "0.5"]))
+    assert bag.pop("verb") == "record" and bag.pop("command") == "bag" and plain.pop("command") == "record"
+    assert bag == plain
