@@ -313,3 +313,30 @@ def test_environment_actions_and_other_event_handlers(pkg, monkeypatch: pytest.M
     launch = load_python_launch(path, {}, [pkg.root])
     assert (launch.nodes[0].name, launch.nodes[0].args) == ("r", "/a:/b")
     assert any("OnShutdown event handler ignored" in n for n in launch.notes)
+
+
+def test_install_layout_package_runs_by_name_with_dry_run(pkg, tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+                                                         capsys: pytest.CaptureFixture[str]) -> None:
+    from robotmodel.launch import run_launch
+
+    # A colcon install prefix: share/<pkg>/ plus the ament index marker; the launch file reaches the
+    # source-tree package probe_description through --package-path.
+    prefix = tmp_path / "install"
+    share = prefix / "share" / "my_robot_bringup"
+    (share / "launch").mkdir(parents=True)
+    (prefix / "share" / "ament_index" / "resource_index" / "packages").mkdir(parents=True)
+    (prefix / "share" / "ament_index" / "resource_index" / "packages" / "my_robot_bringup").write_text("")
+    (share / "package.xml").write_text((pkg.dir / "package.xml").read_text().replace("probe_description",
+                                                                                     "my_robot_bringup"))
+    (share / "launch" / "bringup.launch.py").write_text(HEAD + textwrap.dedent("""
+        def generate_launch_description():
+            urdf = PathJoinSubstitution([FindPackageShare('probe_description'), 'urdf', 'probe.urdf.xacro'])
+            return LaunchDescription([Node(package='robot_state_publisher', executable='robot_state_publisher',
+                parameters=[{'robot_description': ParameterValue(Command(['xacro ', urdf]), value_type=str),
+                             'publish_frequency': 5.0, 'label': FindPackageShare('my_robot_bringup')}])])
+    """))
+    monkeypatch.setenv("AMENT_PREFIX_PATH", str(prefix))
+    assert run_launch("my_robot_bringup", "bringup.launch.py", {}, package_paths=[str(pkg.root)], dry_run=True) == 0
+    out = capsys.readouterr().out.splitlines()
+    assert out == [f"/robot_state_publisher: robotmodel robot-state-publisher {pkg.xacro} --package-path {pkg.root} "
+                   f"--publish-frequency 5.0 --ros-args -p label:={share}"]
