@@ -1,4 +1,4 @@
-"""``robotmodel launch FILE | PKG FILE [name:=value ...]``: ROS 1 / ROS 2 XML launch files, without ROS.
+"""``robotmodel launch FILE | PKG FILE [name:=value ...]``: ROS 1/2 XML and ROS 2 Python launch files, without ROS.
 
 The nodes this project provides run as processes on the bus (robot/joint state publishers,
 the sliders, static transforms, the viewer for rviz); any other node is listed as skipped.
@@ -17,8 +17,10 @@ def register(sub: Any) -> None:
     """Add the ``launch`` subcommand (alias ``roslaunch``)."""
     parser: argparse.ArgumentParser = sub.add_parser(
         "launch", aliases=["roslaunch"],
-        help="run a ROS 1 or ROS 2 XML launch file's description nodes (roslaunch / ros2 launch)",
-        description="Read a ROS 1 (.launch) or ROS 2 (.launch.xml) XML launch file and start the nodes "
+        help="run a ROS 1 or ROS 2 XML or ROS 2 Python launch file's description nodes (roslaunch / ros2 launch)",
+        description="Read a ROS 1 (.launch) or ROS 2 (.launch.xml) XML launch file, or run a ROS 2 Python launch file "
+        "(.launch.py, the file's own code against robotmodel's launch, launch_ros and ament_index_python), and "
+        "start the nodes "
         "robotmodel provides as processes on the bus: robot_state_publisher, joint_state_publisher(_gui), "
         "static_transform_publisher (tf or tf2_ros), and the viewer for rviz/rviz2. Other nodes are listed "
         "as skipped. Ctrl-C or SIGTERM stop every process.",
@@ -34,6 +36,9 @@ def register(sub: Any) -> None:
     parser.add_argument("file", metavar="FILE", nargs="?", help="the launch file's name inside package PKG")
     parser.add_argument("--dry-run", action="store_true",
                         help="print the processes that would start (and the skipped nodes), start nothing")
+    parser.add_argument("-s", "--show-args", "--show-arguments", action="store_true", dest="show_args",
+                        help="show the arguments a Python launch file declares (as ros2 launch --show-args), "
+                        "start nothing")
     parser.add_argument("--no-browser", action="store_true",
                         help="serve the viewer pages without opening a browser")
     parser.add_argument("--package-path", action="append", default=[], metavar="DIR",
@@ -46,4 +51,4 @@ def run(args: argparse.Namespace) -> int:
     from robotmodel.launch import run_launch
 
     return run_launch(args.target, args.file, args.mappings, package_paths=args.package_path, dry_run=args.dry_run,
-                      browser=not args.no_browser)
+                      browser=not args.no_browser, show_args=args.show_args)

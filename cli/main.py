@@ -38,6 +38,7 @@ COMMAND_MODULES: tuple[str, ...] = (
     "robotmodel.cli.view_frames_cmd",
     "robotmodel.cli.tf_export_cmd",
     "robotmodel.cli.record_cmd",
+    "robotmodel.cli.bag_cmd",
     "robotmodel.cli.rsp_cmd",
     "robotmodel.cli.jsp_cmd",
     "robotmodel.cli.jsp_gui_cmd",

@@ -11,7 +11,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-__all__ = ["register", "run"]
+__all__ = ["add_record_arguments", "register", "run"]
 
 
 def register(sub: Any) -> None:
@@ -21,6 +21,11 @@ def register(sub: Any) -> None:
         description="Record topics (default /tf /tf_static /joint_states /robot_description) into MCAP "
                     "(rosbag2's ros2 profile, CDR) until Ctrl-C or SIGTERM.",
     )
+    add_record_arguments(parser)
+
+
+def add_record_arguments(parser: argparse.ArgumentParser) -> None:
+    """The words of ``record`` (also ``bag record``)."""
     parser.add_argument("topics", nargs="*", metavar="TOPIC", help="topics to record")
     parser.add_argument("-a", "--all", action="store_true",
                         help="record every topic, including those that appear later (hidden ones excepted), "

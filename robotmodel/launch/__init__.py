@@ -1,4 +1,10 @@
-"""ROS launch files without ROS: the description-package subset of ROS 1 and ROS 2 launch XML.
+"""ROS launch files without ROS: the description-package subset of ROS 1 and ROS 2 launch XML, and ROS 2 Python.
+
+A ROS 2 Python launch file (``*.launch.py``) runs as ``ros2 launch`` runs it, against
+stand-ins of ``launch``, ``launch_ros`` and ``ament_index_python`` importable under those
+names during the run only (:mod:`robotmodel.launch._pyload`); it yields the same
+:class:`LaunchFile` as an XML file, so the same plan follows. :func:`run_launch` picks the
+reader by the file's suffix (``show_args``: ``ros2 launch --show-args``).
 
 - :func:`load_launch_file`: read a file (either dialect, told from its content: a ROS 1
   include named ``*.launch.xml`` is ROS 1) with ``name:=value`` arguments into its nodes and
@@ -20,9 +26,10 @@ Bad input raises :class:`robotmodel.errors.LaunchError` starting with ``FILE:LIN
 
 from __future__ import annotations
 
+from robotmodel.launch._files import load_launch_file
 from robotmodel.launch._find import find_launch_file
 from robotmodel.launch._kinds import build_plan
-from robotmodel.launch._loader import LaunchFile, load_launch_file
+from robotmodel.launch._loader import LaunchFile
 from robotmodel.launch._model import Dialect, LaunchPlan, NodeDecl, Param, ProcessSpec, XacroSource
 from robotmodel.launch._run import run_launch, run_processes
 

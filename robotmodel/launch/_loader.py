@@ -15,35 +15,30 @@ Scoping follows each system:
   ``namespace``; ``<set_remap>`` and ``<set_parameter>`` live in the configurations (an
   include shares its includer's; a group's end with it, unless the scope already had some,
   which launch_ros then extends in place). Parameters belong to nodes, inline or
-  from a params file (``<param from="FILE"/>``).
+  from a params file (``<param from="FILE"/>``). A ROS 2 file's ``<include>`` of a Python
+  launch file runs it in that scope (:func:`robotmodel.launch._pyload.include_python`), of a
+  YAML one reads it as XML; roslaunch includes only XML, so a ROS 1 file's are skipped.
+
+The reader's state, attribute helpers and parameter forms are :mod:`robotmodel.launch._readbase`.
 """
 
 from __future__ import annotations
 
-import os
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 from robotmodel.errors import LaunchError
 from robotmodel.launch._dialect import detect_dialect
-from robotmodel.launch._model import Dialect, NodeDecl, Param, XacroSource
-from robotmodel.launch._ptype import ros1_param_text
+from robotmodel.launch._model import Dialect, NodeDecl, Param
+from robotmodel.launch._readbase import PythonInclude, _Reader, _Scope, join_ns
 from robotmodel.launch._remaps import Remap, ros1_add, ros1_for_node, ros1_problem
-from robotmodel.launch._rosparam import read_rosparam_file, rosparam_params
 from robotmodel.launch._subst import (
-    Sub,
-    SubstContext,
-    expand_xacro,
-    parse,
-    parse_xacro_command,
-    resolve,
-    resolve_parts,
     truth,
 )
 from robotmodel.launch._xml import Element, parse_file, where
 
-__all__ = ["LaunchFile", "join_ns", "load_launch_file"]
+__all__ = ["LaunchFile", "join_ns", "read_launch_xml"]
 
 _MAX_DEPTH = 32
 _IGNORED = frozenset({
@@ -64,31 +59,13 @@ class LaunchFile:
     packages: tuple[Path, ...] = ()  # the packages its $(find)s resolved, in first-use order
 
 
-@dataclass
-class _Scope:
-    path: Path
-    dialect: Dialect
-    args: dict[str, str | None]
-    passed: dict[str, str]
-    declared: set[str]
-    ns: str
-    depth: int
-    #: Remap rules in force for the nodes that follow (ROS 1 <remap>, ROS 2 <set_remap>).
-    remaps: list[Remap] = field(default_factory=list)
-    #: ROS 2 <set_parameter> values (name, value) for the nodes that follow, scoped as the remaps.
-    params: list[tuple[str, str]] = field(default_factory=list)
+def read_launch_xml(path: Path, args: Mapping[str, str], package_paths: Sequence[Path] = (),
+                    python_include: PythonInclude | None = None) -> LaunchFile:
+    """Read ``path`` with command-line ``args``; raises LaunchError (``FILE:LINE: ...``) on bad input.
 
-
-def join_ns(base: str, name: str) -> str:
-    """``name`` under namespace ``base`` (absolute names kept); always absolute, no trailing '/'."""
-    full = name if name.startswith("/") else base.rstrip("/") + "/" + name
-    parts = [p for p in full.split("/") if p]
-    return "/" + "/".join(parts)
-
-
-def load_launch_file(path: Path, args: Mapping[str, str], package_paths: Sequence[Path] = ()) -> LaunchFile:
-    """Read ``path`` with command-line ``args``; raises LaunchError (``FILE:LINE: ...``) on bad input."""
-    loader = _Loader(package_paths)
+    ``python_include`` runs a ROS 2 ``<include>`` of a Python launch file (None: listed as skipped).
+    """
+    loader = _Loader(package_paths, python_include)
     try:
         loader.load_top(path.resolve(), dict(args))
     except RecursionError:
@@ -96,49 +73,13 @@ def load_launch_file(path: Path, args: Mapping[str, str], package_paths: Sequenc
     return LaunchFile(loader.nodes, loader.params, loader.skipped, loader.notes, tuple(loader.found))
 
 
-class _Loader:
-    def __init__(self, package_paths: Sequence[Path]) -> None:
-        self.package_paths = list(package_paths)
-        self.nodes: list[NodeDecl] = []
-        self.params: dict[str, Param] = {}
-        self.skipped: list[str] = []
-        self.notes: list[str] = []
-        self.expanded: set[XacroSource] = set()
-        self.found: dict[Path, None] = {}
-
+class _Loader(_Reader):
     def load_top(self, path: Path, args: dict[str, str]) -> None:
         root = parse_file(path)
         dialect = detect_dialect(path, root)
         configs: dict[str, str | None] = dict(args) if dialect is Dialect.ROS2 else {}
         self._walk(root.children, _Scope(path, dialect, configs, dict(args), set(), "/", 0))
 
-    # -- helpers -----------------------------------------------------------------
-    def _ctx(self, scope: _Scope, elem: Element) -> SubstContext:
-        return SubstContext(scope.path, elem.line, scope.dialect, scope.args, self.package_paths, self.found)
-
-    def _attr(self, scope: _Scope, elem: Element, name: str, *, required: bool = False) -> str | None:
-        raw = elem.attrib.get(name)
-        if raw is None:
-            if required:
-                raise LaunchError(f"{where(scope.path, elem.line)}: <{elem.tag}> needs a '{name}' attribute")
-            return None
-        return resolve(raw, self._ctx(scope, elem))
-
-    def _req(self, scope: _Scope, elem: Element, name: str) -> str:
-        value = self._attr(scope, elem, name, required=True)
-        assert value is not None
-        return value
-
-    def _enabled(self, scope: _Scope, elem: Element) -> bool:
-        ctx = self._ctx(scope, elem)
-        cond_if, cond_unless = self._attr(scope, elem, "if"), self._attr(scope, elem, "unless")
-        if cond_if is not None and cond_unless is not None and scope.dialect is Dialect.ROS1:
-            raise ctx.error(f"<{elem.tag}>: cannot set both 'if' and 'unless' on the same tag")
-        if cond_if is not None and not truth(cond_if, ctx, "if"):
-            return False
-        return not (cond_unless is not None and truth(cond_unless, ctx, "unless"))
-
-    # -- walking -----------------------------------------------------------------
     def _walk(self, elems: list[Element], scope: _Scope) -> None:
         for elem in elems:
             if not self._enabled(scope, elem):
@@ -212,8 +153,9 @@ class _Loader:
             path = beside if beside.exists() else Path.cwd() / path
         if not path.is_file():
             raise ctx.error(f"<include>: launch file not found: {path}")
-        if path.suffix in (".py", ".yaml", ".yml"):
-            self.skipped.append(f"<include> {path} ({where(scope.path, elem.line)}): only XML launch files are read")
+        if path.suffix in (".py", ".yaml", ".yml") and scope.dialect is Dialect.ROS1:
+            self.skipped.append(f"<include> {path} ({where(scope.path, elem.line)}): roslaunch reads only XML "
+                                "launch files")
             return
         given: dict[str, str] = {}
         for child in elem.children:
@@ -226,9 +168,20 @@ class _Loader:
             elif child.tag in ("remap", *_SET_REMAP):
                 # Neither roslaunch nor launch_ros applies it there: it has to precede the include.
                 self.notes.append(f"{where(scope.path, child.line)}: <{child.tag}> inside <include> ignored")
-        root = parse_file(path)
-        dialect = detect_dialect(path, root, scope.dialect)
         ns = join_ns(scope.ns, self._attr(scope, elem, "ns") or "")
+        if path.suffix == ".py":
+            if self.python_include is None:
+                self.skipped.append(f"<include> {path} ({where(scope.path, elem.line)}): no Python launch support here")
+                return
+            self.python_include(self, path, scope, given, ns)
+            return
+        if path.suffix in (".yaml", ".yml"):
+            from robotmodel.launch._yamlfront import parse_yaml_file
+
+            root, dialect = parse_yaml_file(path), Dialect.ROS2
+        else:
+            root = parse_file(path)
+            dialect = detect_dialect(path, root, scope.dialect)
         if dialect is Dialect.ROS2:
             configs = scope.args if scope.dialect is Dialect.ROS2 else {}
             configs.update(given)
@@ -284,87 +237,6 @@ class _Loader:
             return
         self._remap(scope, elem, scope.remaps)
 
-    # -- parameters ----------------------------------------------------------------
-    def _param(self, scope: _Scope, elem: Element, prefix: str = "") -> list[Param]:
-        name = prefix + self._req(scope, elem, "name")
-        ctx = self._ctx(scope, elem)
-        if elem.children and scope.dialect is Dialect.ROS2:
-            out: list[Param] = []
-            for child in elem.children:
-                if child.tag == "param" and self._enabled(scope, child):
-                    out.extend(self._param(scope, child, name + "."))
-            return out
-        raw_value = elem.attrib.get("value")
-        if raw_value is not None:
-            parts = parse(raw_value, ctx)
-            if len(parts) == 1 and isinstance(parts[0], Sub) and parts[0].name == "command" and parts[0].args:
-                return [self._xacro_param(name, resolve_parts(parts[0].args[0], ctx), ctx)]
-            value = resolve_parts(parts, ctx)
-            typed = None
-            if scope.dialect is Dialect.ROS1:
-                try:
-                    typed = ros1_param_text(value, self._attr(scope, elem, "type"))
-                except ValueError as exc:
-                    raise ctx.error(f"<param name=\"{name}\">: {exc}") from None
-            return [Param(name, value=value, file=scope.path, line=elem.line, typed=typed)]
-        textfile = self._attr(scope, elem, "textfile")
-        if textfile is not None:
-            path = Path(textfile)
-            if not path.is_file():
-                raise ctx.error(f"<param name=\"{name}\">: textfile not found: {path}")
-            return [Param(name, textfile=path.resolve(), file=scope.path, line=elem.line)]
-        command_text = self._attr(scope, elem, "command")
-        if command_text is not None:
-            return [self._xacro_param(name, command_text, ctx)]
-        if "binfile" in elem.attrib or "from" in elem.attrib:
-            self.notes.append(f"{where(scope.path, elem.line)}: <param name=\"{name}\"> from a file ignored")
-            return []
-        raise ctx.error(f"<param name=\"{name}\"> needs value, textfile or command")
-
-    def _xacro_param(self, name: str, command: str, ctx: SubstContext) -> Param:
-        source = parse_xacro_command(command, ctx)
-        # roslaunch runs a <param command> while it reads the file, ros2 launch a $(command) as
-        # the node starts: either way a xacro that fails ends the launch before anything runs.
-        # The nodes expand it again themselves; it is checked here once per distinct command.
-        if source not in self.expanded:
-            expand_xacro(command, source, ctx, name)
-            self.expanded.add(source)
-        return Param(name, xacro=source, file=ctx.path, line=ctx.line)
-
-    def _params_file(self, scope: _Scope, elem: Element, files: list[tuple[Path, int]]) -> None:
-        # launch_ros makes it absolute without resolving links (the node sees the path as written).
-        path = Path(os.path.abspath(self._req(scope, elem, "from")))  # noqa: PTH100
-        if path.is_file():
-            files.append((path, elem.line))
-        else:
-            # launch_ros warns and starts the node without it.
-            self.notes.append(f"{where(scope.path, elem.line)}: Parameter file path is not a file: {path}")
-
-    def _global_param(self, scope: _Scope, elem: Element, ns: str) -> None:
-        if scope.dialect is Dialect.ROS2:
-            self.notes.append(f"{where(scope.path, elem.line)}: <param> outside a node ignored (ROS 2)")
-            return
-        for p in self._param(scope, elem):
-            self.params[join_ns(ns, p.name)] = p
-
-    def _rosparam(self, scope: _Scope, elem: Element) -> list[Param]:
-        ctx = self._ctx(scope, elem)
-        command = self._attr(scope, elem, "command") or "load"
-        if command != "load":
-            self.notes.append(f"{where(scope.path, elem.line)}: <rosparam command=\"{command}\"> ignored")
-            return []
-        file = self._attr(scope, elem, "file")
-        if file is None:
-            text = resolve(elem.text, ctx)
-        else:
-            text = read_rosparam_file(Path(file), ctx)
-            subst = self._attr(scope, elem, "subst_value")
-            if subst is not None and truth(subst, ctx, "subst_value"):
-                text = resolve(text, ctx)
-        base = join_ns(self._attr(scope, elem, "ns") or "", self._attr(scope, elem, "param") or "").lstrip("/")
-        return rosparam_params(text, base, ctx)
-
-    # -- nodes ---------------------------------------------------------------------
     def _node(self, scope: _Scope, elem: Element) -> None:
         pkg = self._req(scope, elem, "pkg")
         exe_attr = "exec" if scope.dialect is Dialect.ROS2 else "type"

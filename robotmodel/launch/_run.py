@@ -41,13 +41,17 @@ def run_processes(specs: Sequence[ProcessSpec], *, log: Callable[[str], None] | 
 
 
 def run_launch(target: str, file: str | None = None, mappings: Mapping[str, str] | None = None, *,
-               package_paths: Sequence[str] = (), dry_run: bool = False, browser: bool = True) -> int:
+               package_paths: Sequence[str] = (), dry_run: bool = False, browser: bool = True,
+               show_args: bool = False) -> int:
     """``roslaunch FILE`` (``file`` None: ``target`` is the file) or ``roslaunch PKG FILE``: plan, print, run.
 
     On the ROS 1 wire the file's parameters go to the parameter server first, as roslaunch
     puts them there, and the nodes read robot_description from it. Prints the notes and
     skipped nodes, then (unless ``dry_run``, which prints the command lines) runs the
-    processes until SIGINT/SIGTERM, a required exit or all exits. Bad input raises
+    processes until SIGINT/SIGTERM, a required exit or all exits. A Python launch file
+    (``*.py``) runs as ``ros2 launch`` runs it (:mod:`robotmodel.launch._pyload`), a
+    ROS 2 YAML one (``*.yaml``) is read as its XML equivalent;
+    ``show_args`` prints its arguments instead, as ``ros2 launch --show-args``. Bad input raises
     :class:`robotmodel.errors.LaunchError`. Returns the exit code.
     """
     import shutil
@@ -55,9 +59,9 @@ def run_launch(target: str, file: str | None = None, mappings: Mapping[str, str]
     from pathlib import Path
 
     from robotmodel.errors import LaunchError
+    from robotmodel.launch._files import load_launch_file
     from robotmodel.launch._find import find_launch_file
     from robotmodel.launch._kinds import build_plan
-    from robotmodel.launch._loader import load_launch_file
     from robotmodel.rcl import ros1_wire
 
     paths = [Path(p).resolve() for p in package_paths]
@@ -67,7 +71,21 @@ def run_launch(target: str, file: str | None = None, mappings: Mapping[str, str]
             raise LaunchError(f"{path}: no such launch file")
     else:
         path = find_launch_file(target, file, paths)
-    launch = load_launch_file(path, dict(mappings or {}), paths)
+    if path.suffix == ".py":
+        from robotmodel.launch._pyload import load_python_launch, show_arguments
+
+        if show_args:
+            print(show_arguments(path, paths), end="", flush=True)
+            return 0
+        launch = load_python_launch(path, dict(mappings or {}), paths)
+    elif show_args:
+        raise LaunchError(f"{path}: --show-args reads Python launch files (.launch.py)")
+    elif path.name.endswith((".yaml", ".yml")):
+        from robotmodel.launch._pysources import load_yaml_launch
+
+        launch = load_yaml_launch(path, dict(mappings or {}), paths)
+    else:
+        launch = load_launch_file(path, dict(mappings or {}), paths)
     ros1 = ros1_wire()
     if ros1 and not dry_run:
         from robotmodel.launch._ros1params import set_on_server

@@ -30,7 +30,8 @@ def where(path: Path, line: int) -> str:
 def parse_file(path: Path) -> Element:
     """Parse ``path``; unreadable or malformed XML raises LaunchError naming the file and line."""
     if path.name.endswith((".py", ".yaml", ".yml")):
-        raise LaunchError(f"{path}: only XML launch files are read (.launch, .launch.xml, .xml), not Python or YAML")
+        raise LaunchError(f"{path}: not an XML launch file (.launch, .launch.xml, .xml): Python and YAML launch "
+                          "files are read on their own or from a Python launch file")
     try:
         data = path.read_bytes()
     except OSError as exc:

@@ -8,7 +8,9 @@
   :func:`sample_times`: evenly spaced instants over a span, refused when absurdly many.
 - :class:`McapWriter` and :class:`Recorder`: MCAP files in rosbag2's ros2 profile (CDR),
   written from the bus, crash-tolerant chunk by chunk.
-- :func:`run_record` and :func:`run_tf_export`: the ``record`` and ``tf-export`` programs.
+- :func:`bag_info` / :func:`format_bag_info`: ``ros2 bag info``'s summary of any recording.
+- :func:`run_record`, :func:`run_tf_export` and :func:`run_bag_info`: the ``record``,
+  ``tf-export`` and ``bag info`` programs.
 
 The core (:mod:`robotmodel.tf`) does not depend on this package: a buffer is filled from
 here, not the other way round.
@@ -25,6 +27,7 @@ from robotmodel.recording._export import (
     sample_times,
     write_poses,
 )
+from robotmodel.recording._info import BagInfo, BagTopic, bag_info, format_bag_info, run_bag_info
 from robotmodel.recording._load import DEFAULT_TOPICS, Loaded, load_buffer, load_recording
 from robotmodel.recording._mcap import McapWriter, qos_yaml
 from robotmodel.recording._open import Format, Recording, Topic, detect_format, ros1_typestore
@@ -37,6 +40,8 @@ __all__ = [
     "KNOWN_TOPICS",
     "MAX_ROWS",
     "MAX_STEPS",
+    "BagInfo",
+    "BagTopic",
     "Format",
     "Loaded",
     "McapWriter",
@@ -44,12 +49,15 @@ __all__ = [
     "Recorder",
     "Recording",
     "Topic",
+    "bag_info",
     "detect_format",
+    "format_bag_info",
     "load_buffer",
     "load_recording",
     "pose_series",
     "qos_yaml",
     "ros1_typestore",
+    "run_bag_info",
     "run_record",
     "run_tf_export",
     "sample_times",

@@ -157,12 +157,20 @@ def test_as_a_process_exit_code_and_no_traceback(pkg):
                                         "(invalid token) (column 1)"]
 
 
-def test_python_launch_file_is_refused_in_one_line(pkg, capsys):
+def test_python_launch_file_without_generate_launch_description_is_one_line(pkg, capsys):
     path = pkg.launch("display.launch.py", "from launch import LaunchDescription\n")
     code, err, _ = run_cli(capsys, str(path))
     assert code == 1
-    assert err == [f"robotmodel launch: error: {path}: only XML launch files are read (.launch, .launch.xml, "
-                   ".xml), not Python or YAML"]
+    assert err == [f"robotmodel launch: error: launch file at '{path}' does not contain the required function "
+                   "'generate_launch_description()'"]
+
+
+def test_yaml_launch_file_missing_an_argument_is_one_line(pkg, capsys):
+    path = pkg.launch("display.launch.yaml", "launch:\n- arg:\n    name: model\n")
+    code, err, _ = run_cli(capsys, str(path))
+    assert code == 1
+    assert err == [f"robotmodel launch: error: {path}:2: Included launch description missing required argument "
+                   "'model' (description: 'no description given'), given: []"]
 
 
 def test_deeply_nested_substitutions_and_groups_are_errors(pkg, capsys):
