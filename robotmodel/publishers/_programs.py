@@ -166,6 +166,7 @@ def run_robot_state_publisher(file: str | None = None, mappings: Mapping[str, st
     ``robot_description``. Returns the exit code.
     """
     from robotmodel.bus import Node
+    from robotmodel.publishers._description_topic import DescriptionTopic
     from robotmodel.publishers._rsp import RobotStatePublisher
     from robotmodel.publishers._rsp_state import check_publish_frequency
     from robotmodel.rcl import (
@@ -202,16 +203,55 @@ def run_robot_state_publisher(file: str | None = None, mappings: Mapping[str, st
     check_publish_frequency(settings["publish_frequency"])
     # As RSP before 3.5.1: the parameter is the robot; FILE is the fallback when it is empty.
     desc: Any = str(text) if text else _load(file, mappings or {}, package_paths, untrusted)
-    if desc is None:
+    if desc is None and text is not None:  # an explicitly empty parameter: RSP's fatal line
         log.critical("robot_description parameter must not be empty")
         return 1
     stop = stop_on_signals()
     # RSP's topics are relative (joint_states, robot_description): they follow the namespace; /tf does not.
-    with Node(name, namespace, connect=list(connect), remappings=ros.remaps) as node, RobotStatePublisher(
-            desc, bus=node, logger=log, **settings) as rsp:
-        rsp.serve_parameters()  # ros2 param get/set, as ROS 2's robot_state_publisher
-        stop.wait()
+    with Node(name, namespace, connect=list(connect), remappings=ros.remaps) as node:
+        topic = None
+        if desc is None:
+            # Neither FILE nor parameter: the robot another node publishes (a stock ROS 2's RSP would
+            # stop here; robotmodel's joins a running system the way rviz does).
+            topic = DescriptionTopic(node)
+            log.info("No robot_description parameter: waiting for the robot on the robot_description topic")
+            desc = topic.wait(lambda t: _parse_or_warn(t, log), stop)
+            if desc is None:
+                topic.close()
+                return 0
+        with RobotStatePublisher(desc, bus=node, logger=log, **settings) as rsp:
+            rsp.serve_parameters()  # ros2 param get/set, as ROS 2's robot_state_publisher
+            if topic is not None:
+                _follow_descriptions(topic, rsp, stop, log)
+            stop.wait()
+        if topic is not None:
+            topic.close()
     return 0
+
+
+def _parse_or_warn(text: str, log: Any) -> Any:
+    """The robot in ``text``, or None after one error line naming what is wrong with it."""
+    from robotmodel.errors import RobotModelError
+    from robotmodel.model import parse_urdf
+
+    try:
+        return parse_urdf(text)
+    except RobotModelError as exc:
+        log.error("ignoring robot_description: %s", " ".join(str(exc).splitlines()))
+        return None
+
+
+def _follow_descriptions(topic: Any, rsp: Any, stop: Any, log: Any) -> None:
+    """Take each later description another node publishes (ours, republished, is the same text: skipped)."""
+    import threading
+
+    def run() -> None:
+        while not stop.is_set():
+            desc = topic.wait(lambda t: None if t == rsp.description_text else _parse_or_warn(t, log), stop)
+            if desc is not None:
+                rsp.set_description(desc)
+
+    threading.Thread(target=run, name="robot_description", daemon=True).start()
 
 
 def _run_ros1_rsp(file: str | None, mappings: Mapping[str, str], package_paths: Sequence[str | os.PathLike[str]],

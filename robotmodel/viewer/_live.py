@@ -20,6 +20,8 @@ import threading
 from collections.abc import Callable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
+from robotmodel.publishers._description_topic import DescriptionTopic
+
 if TYPE_CHECKING:
     from robotmodel.model import RobotDescription
     from robotmodel.viewer._options import ViewOptions
@@ -28,36 +30,6 @@ if TYPE_CHECKING:
 __all__ = ["LiveViewer", "serve_live"]
 
 _TF_PERIOD = 1.0 / 30.0
-
-
-class _Descriptions:
-    """The latest /robot_description text (latched), and an event for each new one."""
-
-    def __init__(self, node: Any) -> None:
-        from robotmodel.bus import QOS_LATCHED
-        from robotmodel.msgs import String
-
-        self.text: str | None = None
-        self.changed = threading.Event()
-        self._lock = threading.Lock()
-        self.sub = node.create_subscription(String, "robot_description", self._on_message, QOS_LATCHED)
-
-    def _on_message(self, msg: Any) -> None:
-        with self._lock:
-            if msg.data != self.text:
-                self.text = msg.data
-                self.changed.set()
-
-    def take(self) -> str | None:
-        """The text if it changed since the last call, else None."""
-        with self._lock:
-            if not self.changed.is_set():
-                return None
-            self.changed.clear()
-            return self.text
-
-    def close(self) -> None:
-        self.sub.close()
 
 
 def _parse(text: str) -> Any:
@@ -71,18 +43,12 @@ def _parse(text: str) -> Any:
         return None
 
 
-def _wait_description(topic: _Descriptions, stop: threading.Event, closed: threading.Event) -> Any:
+def _wait_description(topic: DescriptionTopic, stop: threading.Event, closed: threading.Event) -> Any:
     print("Waiting for robot_description to be published on the robot_description topic...", file=sys.stderr)
-    while not stop.is_set() and not closed.is_set():
-        if topic.changed.wait(0.1):
-            text = topic.take()
-            desc = _parse(text) if text is not None else None
-            if desc is not None:
-                return desc
-    return None
+    return topic.wait(_parse, stop, closed)
 
 
-def _watch_descriptions(topic: _Descriptions, viewer: Any, stop: threading.Event) -> None:
+def _watch_descriptions(topic: DescriptionTopic, viewer: Any, stop: threading.Event) -> None:
     # As rviz's RobotModel display: a new description on the topic replaces the robot.
     while not stop.is_set():
         if topic.changed.wait(0.2):
@@ -198,7 +164,7 @@ class LiveViewer:
         if description is None and self.node is not None:
             description = _parameter_description(self.node)
             self.description = description
-        self._topic = _Descriptions(self.node) if description is None else None
+        self._topic = DescriptionTopic(self.node) if description is None else None
         if self._topic is not None:
             self._closers.insert(0, self._topic)
 

@@ -140,7 +140,7 @@ def test_rsp_takes_the_robot_from_the_robot_description_parameter(live, urdf):
      "type, parameter {ignore_timestamp} is of type {bool}, setting it to {integer} is not allowed."),
     (["robot-state-publisher", "{urdf}", "--ros-args", "-p", "publish_frequency:=2000.0"], 1,
      "publish_frequency must be between 0 and 1000"),
-    (["robot-state-publisher", "--ros-args", "-p", "frame_prefix:=r1/"], 1,
+    (["robot-state-publisher", "--ros-args", "-p", "robot_description:=''"], 1,
      "robot_description parameter must not be empty"),
     (["robot-state-publisher", "{urdf}", "--ros-args", "-r", "joint_states:=/a/*"], 2,
      "robotmodel robot-state-publisher: error: Couldn't parse remap rule: '-r joint_states:=/a/*'. Error: "),

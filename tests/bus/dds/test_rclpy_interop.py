@@ -201,20 +201,19 @@ def _palm_pose() -> np.ndarray:
 
 def test_real_rclpy_description_and_joints_drive_robotmodels_tools(rclpy: Any, procs: Any, ctx: Context,
                                                                    tmp_path: Path) -> None:
-    """rclpy's URDF (latched) and JointState -> robot_state_publisher -> tf2_echo prints FK's pose; the viewer
-    takes the robot and its joints from rclpy alone.
+    """rclpy's URDF (latched) and JointState -> robot_state_publisher (no FILE) -> tf2_echo prints FK's pose;
+    the viewer also takes the robot and its joints from rclpy alone.
 
-    ROS 2's robot_state_publisher takes its robot from the robot_description parameter, never
-    from the topic (without it: "robot_description parameter must not be empty"), and
-    robotmodel's does the same, so it gets the file rclpy published; the command that takes
-    the robot from rclpy's /robot_description is the viewer (no FILE), as RViz's RobotModel does.
+    Without FILE or ``robot_description`` parameter robotmodel's robot_state_publisher takes
+    the robot another node publishes on /robot_description (a stock ROS 2 RSP would stop with
+    "robot_description parameter must not be empty", which an explicitly empty parameter still gives).
     """
     urdf = tmp_path / "arm.urdf"
     urdf.write_text(expand(ARM))
     rclpy("describer", str(urdf), json.dumps(ARM_STATE))
     tf_raw = Inbox()
     Node("rm_tf_spy", context=ctx).create_raw_subscription("/tf", tf_raw)
-    procs.cli("robot_state_publisher", str(urdf))
+    rsp = procs.cli("robot_state_publisher")
     view = procs.cli("view", "--follow", "--port", "0")
     echo = procs.cli("tf2_echo", "world", "gripper_palm_link")
     want = tuple(f"{v:.3f}" for v in _palm_pose()[:3, 3])
@@ -222,7 +221,8 @@ def test_real_rclpy_description_and_joints_drive_robotmodels_tools(rclpy: Any, p
     def shown(lines: list[str]) -> bool:
         return any((m := TRANSLATION.match(ln)) and m.groups() == want for ln in lines)
 
-    assert echo.wait_for(shown, DEADLINE_S), (want, echo.lines[-8:], echo.errors[-8:])
+    assert echo.wait_for(shown, DEADLINE_S), (want, echo.lines[-8:], echo.errors[-8:], rsp.errors[-8:])
+    assert any("waiting for the robot on the robot_description topic" in ln for ln in rsp.errors), rsp.errors[-8:]
     # /tf as rmw writes it: every sample robot_state_publisher put on DDS is rosbags' CDR of
     # the message it holds (tf2_msgs has no wheel for the rclpy side to decode it itself).
     samples = tf_raw.wait(lambda items: any(s.typename == TF for s in items), "raw /tf")
