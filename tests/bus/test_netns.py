@@ -31,7 +31,6 @@ from typing import Any
 
 import pytest
 
-from robotmodel.bus import default_wire
 from robotmodel.kinematics import KinematicModel, KinematicState
 from robotmodel.model import load
 
@@ -103,18 +102,6 @@ def cli(*args: str) -> list[str]:
     return [sys.executable, "-m", "robotmodel.cli.main", *args]
 
 
-def dds_cli(*args: str) -> list[str]:
-    """``robotmodel ARGS`` on the DDS wire (RMW_IMPLEMENTATION names a DDS rmw in its environment).
-
-    Until the commands choose DDS for a DDS rmw themselves (issue 20's other half), they are
-    put on it here the only way the code allows: the node's wire choice is made to say DDS.
-    """
-    if default_wire({"RMW_IMPLEMENTATION": "rmw_cyclonedds_cpp"}) == "dds":
-        return cli(*args)
-    return [sys.executable, "-c", "import sys, robotmodel.bus._node as n; n.default_wire = lambda environ=None: 'dds'; "
-            "from robotmodel.cli.main import main; sys.exit(main(sys.argv[1:]))", *args]
-
-
 def fk_palm_translation() -> tuple[str, ...]:
     """gripper_palm_link in world at the published joints, from robotmodel's FK, as tf2_echo rounds it."""
     state = KinematicState(KinematicModel(load(ARM))).update({"arm_shoulder_joint": 0.5})
@@ -152,13 +139,13 @@ def test_dds_joint_states_and_tf_reach_a_real_rclpy_on_another_host(hosts: Hosts
             env["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "SUBNET"
     else:  # discovery stays on each host; the other host is named
         env_a["ROS_STATIC_PEERS"], env_b["ROS_STATIC_PEERS"] = ADDR_B, ADDR_A
-    arm_in_a(procs, hosts, dict(env_a, RMW_IMPLEMENTATION="rmw_cyclonedds_cpp"), dds_cli)
+    arm_in_a(procs, hosts, dict(env_a, RMW_IMPLEMENTATION="rmw_cyclonedds_cpp"), cli)
     rclpy_env = {k: v for k, v in env_b.items() if not k.startswith(("PYTHON", "VIRTUAL_ENV"))}
     rclpy_env.update(RMW_IMPLEMENTATION="rmw_fastrtps_cpp", ROS_HOME=str(tmp_path), ROS_LOG_DIR=str(tmp_path / "log"),
                      PYTHONUNBUFFERED="1")
     listener = procs.run(hosts.b(str(RCLPY), str(RCLPY_PEER), "joint_listener"), env=rclpy_env)
     graph = procs.run(hosts.b(str(RCLPY), str(RCLPY_PEER), "graph", "robot_state_publisher", "/tf"), env=rclpy_env)
-    echo = procs.run(hosts.b(*dds_cli("tf2_echo", "world", "gripper_palm_link")),
+    echo = procs.run(hosts.b(*cli("tf2_echo", "world", "gripper_palm_link")),
                      env=dict(env_b, RMW_IMPLEMENTATION="rmw_cyclonedds_cpp"))
     assert_joint_states(listener)
     publishers = json.loads(graph.wait_line("publishers ", timeout=DEADLINE_S)[len("publishers "):])
