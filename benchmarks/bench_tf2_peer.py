@@ -25,6 +25,7 @@ Run: python benchmarks/bench_tf2_peer.py [--quick] [--rounds N]   (needs Debian'
 
 from __future__ import annotations
 
+import itertools
 import json
 import math
 import os
@@ -63,7 +64,7 @@ def make_data(quick: bool) -> dict[str, Any]:
     samples = 500
     stamps = [(k + 1) * (SEC // 100) for k in range(samples)]
     links = []
-    for parent, child in zip(CHAIN, CHAIN[1:], strict=False):
+    for parent, child in itertools.pairwise(CHAIN):
         axis = [rng.gauss(0.0, 1.0) for _ in range(3)]
         norm = math.sqrt(sum(a * a for a in axis))
         axis = [a / norm for a in axis]
