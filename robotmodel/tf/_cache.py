@@ -14,6 +14,8 @@ from __future__ import annotations
 import struct
 from bisect import bisect_left, bisect_right
 from dataclasses import dataclass
+from math import acos as _acos
+from math import sin as _sin
 
 import numpy as np
 import numpy.typing as npt
@@ -25,6 +27,7 @@ __all__ = ["CacheMiss", "StaticCache", "TimeCache", "format_time"]
 
 _POSE = struct.Struct("7d")
 _unpack = _POSE.unpack_from
+_unpack_pair = struct.Struct("14d").unpack_from
 _pack = _POSE.pack_into
 _ROW = _POSE.size
 _MIN_SPARE = 16
@@ -65,6 +68,7 @@ class TimeCache:
         "_smv",
         "_stamps",
         "_start",
+        "parent",
         "window",
     )
 
@@ -77,6 +81,9 @@ class TimeCache:
 
     def __init__(self, window_ns: int | None) -> None:
         self.window = window_ns
+        # The parent id every stored sample has (0 while empty), -1 once two differ: a cache with
+        # one parent gives the same chain at every time, which lets BufferCore reuse its walk.
+        self.parent = 0
         self._start = self._end = 0
         self._newest = self._oldest = 0  # stamps at end - 1 and start, valid when not empty
         self._allocate(_MIN_SPARE)
@@ -123,6 +130,8 @@ class TimeCache:
     def insert(self, stamp: int, pose: Pose7, parent: int) -> bool:
         """Insert a sample as tf2 does; False when it is older than the window (TF_OLD_DATA)."""
         start, end = self._start, self._end
+        if parent != self.parent:
+            self.parent = parent if end == start else -1
         if end == start:
             self._smv[0] = stamp
             _pack(self._pmv, 0, *pose)
@@ -193,6 +202,8 @@ class TimeCache:
         if n == 0:
             return []
         empty = self._end == self._start
+        if parent != self.parent:
+            self.parent = parent if empty else -1
         increasing = n == 1 or bool((stamps[1:] > stamps[:-1]).all())
         if not increasing or not (empty or int(stamps[0]) > self._newest):
             if self.window is None:
@@ -301,6 +312,45 @@ class TimeCache:
                          f"Requested time {format_time(t)} but the earliest data is at time {format_time(oldest)}",
                          oldest, newest)
 
+    def pose_at(self, t: int) -> Pose7 | None:
+        """:meth:`sample`'s pose where it interpolates or hits the newest sample, else None.
+
+        For a cache with one parent (the caller checks ``parent``): the parent test and the
+        misses' texts are left out; None sends the caller to :meth:`sample`.
+        """
+        oldest, newest = self._oldest, self._newest
+        if oldest < t < newest:
+            smv = self._smv
+            start, end = self._start, self._end
+            i = start + (t - oldest) * (end - 1 - start) // (newest - oldest)
+            t0 = smv[i]
+            if t0 <= t:
+                t1 = smv[i + 1]
+                if t1 <= t:
+                    i = bisect_right(smv, t, i + 1, end) - 1
+                    t0, t1 = smv[i], smv[i + 1]
+            else:
+                i = bisect_right(smv, t, start, i) - 1
+                t0, t1 = smv[i], smv[i + 1]
+            # pose_interpolate inlined, operation for operation (the same results to the bit).
+            ax, ay, az, qx, qy, qz, qw, bx, by, bz, px, py, pz, pw = _unpack_pair(self._pmv, i * _ROW)
+            r = (t - t0) / (t1 - t0)
+            u = 1.0 - r
+            dot = qx * px + qy * py + qz * pz + qw * pw
+            theta = _acos(dot if 0.0 <= dot <= 1.0 else min(1.0, abs(dot)))
+            if theta == 0.0:
+                return (ax * u + bx * r, ay * u + by * r, az * u + bz * r, qx, qy, qz, qw)
+            s = _sin(theta)
+            wa = _sin(u * theta) / s
+            wb = _sin(r * theta) / s
+            if dot < 0.0:
+                wb = -wb
+            return (ax * u + bx * r, ay * u + by * r, az * u + bz * r,
+                    qx * wa + px * wb, qy * wa + py * wb, qz * wa + pz * wb, qw * wa + pw * wb)
+        if t == newest and self._end > self._start:
+            return _unpack(self._pmv, (self._end - 1) * _ROW)
+        return None
+
     def arrays(self) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.float64], npt.NDArray[np.int32]]:
         """Zero-copy views of the live stamps, poses and parent ids (valid until the next insert)."""
         s, e = self._start, self._end
@@ -325,6 +375,7 @@ class TimeCache:
 
     def clear(self) -> None:
         """Drop every sample (and the capacity they used)."""
+        self.parent = 0
         self._start = self._end = 0
         self._allocate(_MIN_SPARE)
 
@@ -346,6 +397,10 @@ class StaticCache:
     def sample(self, t: int) -> tuple[Pose7, int]:
         """The sample, whatever ``t``."""
         return self.pose, self.parent
+
+    def pose_at(self, t: int) -> Pose7:
+        """The sample's pose, whatever ``t``."""
+        return self.pose
 
     def latest(self) -> tuple[int, int]:
         """Static data reports stamp 0."""
