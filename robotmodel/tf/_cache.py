@@ -144,7 +144,12 @@ class TimeCache:
             # Prune with the newest stamp before this insert, as tf2 does (lazy by one insert).
             limit = latest - self.window
             if self._oldest < limit:
-                self._prune(limit)
+                k = start + 1
+                if self._smv[k] >= limit:  # one sample out of the window: the steady state
+                    self._start = k
+                    self._oldest = self._smv[k]
+                else:
+                    self._prune(limit)
             if stamp < limit:
                 return False
         if stamp > latest:

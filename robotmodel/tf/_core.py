@@ -222,7 +222,22 @@ class BufferCore(FrameGraph):
             ns = stamp.sec * 1_000_000_000 + stamp.nanosec  # a stamp message (checked by insert)
         except (AttributeError, TypeError):
             ns = time_arg_ns(stamp, f'setTransform argument stamp of child_frame_id "{transform.child_frame_id}"')
-        return self.insert(transform.header.frame_id, transform.child_frame_id, ns, pose, authority, is_static)
+        parent, child = transform.header.frame_id, transform.child_frame_id
+        # The common case checked here as insert checks it (a unit quaternion with |w| > 0.5 needs
+        # no canonical form but its sign); anything else goes through insert's full checks.
+        x, rw = pose[0], pose[6]
+        if (type(x) is float and type(rw) is float and type(ns) is int and 0 <= ns < STAMP_LIMIT
+                and type(parent) is str and type(child) is str and parent and child and parent != child
+                and parent[0] != "/" and child[0] != "/"):
+            _, y, z, rx, ry, rz, _ = pose
+            n2 = rx * rx + ry * ry + rz * rz + rw * rw
+            total = x + y + z + n2
+            if total - total == 0.0 and abs(n2 - 1.0) < 1e-12:
+                if rw > 0.5:
+                    return self._store(parent, child, ns, pose, authority, is_static)
+                if rw < -0.5:
+                    return self._store(parent, child, ns, (x, y, z, -rx, -ry, -rz, -rw), authority, is_static)
+        return self.insert(parent, child, ns, pose, authority, is_static)
 
     def insert(self, parent: str, child: str, stamp_ns: int, pose: Iterable[float], authority: str,
                is_static: bool = False) -> bool:
@@ -252,6 +267,8 @@ class BufferCore(FrameGraph):
                         # Already a unit quaternion in tf2's sign (w > 0.5: positive matrix trace),
                         # which tf2's matrix round trip returns as is.
                         values = pose
+                    elif rw < -0.5 and abs(n2 - 1.0) < 1e-12:
+                        values = (x, y, z, -rx, -ry, -rz, -rw)  # the same rotation in tf2's sign
                     elif n2 > 0.0:
                         values = (x, y, z, *quat_canonical((rx, ry, rz, rw)))
         if values is None:
@@ -259,6 +276,10 @@ class BufferCore(FrameGraph):
             values = canonical_pose(pose, child, authority)
             if values is None or not ids_ok:
                 return False
+        return self._store(parent, child, stamp_ns, values, authority, is_static)
+
+    def _store(self, parent: str, child: str, stamp_ns: int, values: Pose7, authority: str, is_static: bool) -> bool:
+        """Insert a checked sample (valid names without '/', stamp in range, canonical pose)."""
         with self._lock:
             child_id = self._ids.get(child) or self._intern(child)
             cache = self._caches[child_id]
