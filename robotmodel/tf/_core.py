@@ -112,7 +112,7 @@ def _chain(links: tuple[TimeCache | StaticCache, ...], t: int, final: bool) -> P
                         t0, t1 = smv[i], smv[i + 1]
                     r = (t - t0) / (t1 - t0)
                     u = 1.0 - r
-                bx, by, bz, px, py, pz, pw, cx, cy, cz, rx, ry, rz, rw = _unpack_pair(cache._pmv, i * _ROW)
+                bx, by, bz, px, py, pz, pw, cx, cy, cz, rx, ry, rz, rw = _unpack_pair(smv, cache._pbase + i * _ROW)
                 dot = px * rx + py * ry + pz * rz + pw * rw
                 theta = _acos(dot if 0.0 <= dot <= 1.0 else min(1.0, abs(dot)))
                 bx, by, bz = bx * u + cx * r, by * u + cy * r, bz * u + cz * r
@@ -124,7 +124,7 @@ def _chain(links: tuple[TimeCache | StaticCache, ...], t: int, final: bool) -> P
                         wb = -wb
                     px, py, pz, pw = px * wa + rx * wb, py * wa + ry * wb, pz * wa + rz * wb, pw * wa + rw * wb
             elif t == newest and cache._end > cache._start:
-                bx, by, bz, px, py, pz, pw = _unpack(cache._pmv, (cache._end - 1) * _ROW)
+                bx, by, bz, px, py, pz, pw = _unpack(cache._smv, cache._pbase + (cache._end - 1) * _ROW)
             else:
                 return None
         else:
@@ -366,6 +366,10 @@ class BufferCore(FrameGraph):
     def _intern(self, name: str) -> int:
         found = self._ids.get(name)
         if found is None:
+            # The buffer keeps its own copy of a new name, made now: the caller's string was
+            # typically decoded along with a whole message's throw-away objects, and kept, it
+            # would pin the allocator's memory they used (a 100k-frame message: ~50 MiB for good).
+            name = "".join((name, ""))
             found = self._ids[name] = len(self._names)
             self._names.append(name)
             self._caches.append(None)
@@ -408,7 +412,7 @@ class BufferCore(FrameGraph):
             current = plan is not None and plan[0] == self._topology
             if current:
                 t = time_ns or _latest(plan[4])  # type: ignore[index]
-                pose = _run(plan, t)  # type: ignore[arg-type]
+                pose = _chain(plan[2], t, True) if plan[1] == _UP else _run(plan, t)  # type: ignore[index,arg-type]
                 if pose is not None:
                     return pose, t
             if target == source:

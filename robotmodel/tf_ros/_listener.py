@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING, Any
 
 from robotmodel.errors import MessageError, TransformException
 from robotmodel.msgs import TFMessage
+from robotmodel.tf._memory import BIG_MESSAGE, release_free_memory
 from robotmodel.tf_ros._authority import PublisherNames
 from robotmodel.tf_ros._node import OwnedNode
 
@@ -119,6 +120,9 @@ class TransformListener:
         who = raw.info.publisher if self._authority is None and raw.info.publisher else self._who(gid)
         if not (is_static and self._names is not None):
             self._insert_all(msg if insert is None else records, who, is_static)
+            if insert is not None and len(records) >= BIG_MESSAGE:
+                del records
+                release_free_memory()
             return
         items: list[Any] = list(msg.transforms) if insert is None else records
         with self._static_lock:
