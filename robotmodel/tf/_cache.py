@@ -58,7 +58,8 @@ def _no_data(t: int, only: int) -> CacheMiss:
 class TimeCache:
     """Samples of one child frame within a time window (``None``: unbounded, never pruned)."""
 
-    __slots__ = ("_cap", "_end", "_newest", "_oldest", "_pbase", "_qmv", "_smv", "_start", "parent", "window")
+    __slots__ = ("_cap", "_end", "_newest", "_oldest", "_pbase", "_qmv", "_smv", "_start", "authority", "parent",
+                 "window")
 
     # One fixed-size array.array of 8 * cap int64 slots: the stamps in [0, cap), then the poses
     # (7 doubles a row) from byte _pbase = 8 * cap on. Parent ids get their own array only once
@@ -72,6 +73,7 @@ class TimeCache:
 
     def __init__(self, window_ns: int | None) -> None:
         self.window = window_ns
+        self.authority: str | None = None  # who sent the newest accepted sample (view_frames' broadcaster)
         # The parent id every stored sample has (0 while empty), -1 once two differ: a cache with
         # one parent gives the same chain at every time, which lets BufferCore reuse its walk.
         self.parent = 0
@@ -386,9 +388,10 @@ def _own(pose: Pose7) -> Pose7:
 class StaticCache:
     """One sample, valid at every time."""
 
-    __slots__ = ("parent", "pose")
+    __slots__ = ("authority", "parent", "pose")
 
     def __init__(self, pose: Pose7, parent: int) -> None:
+        self.authority: str | None = None
         self.pose = _own(pose)
         self.parent = parent
 

@@ -196,7 +196,6 @@ class BufferCore(FrameGraph):
         self._ids: dict[str, int] = {"NO_PARENT": 0}
         self._names: list[str] = ["NO_PARENT"]
         self._caches: list[TimeCache | StaticCache | None] = [None]
-        self._authority: dict[int, str] = {}
         self._lock = threading.RLock()
         # The chain walk of a (target, source) pair, kept while no insert changes the shape of the
         # tree (a cache created or replaced, a frame's parent changed, a cache cleared): see _plan.
@@ -297,7 +296,7 @@ class BufferCore(FrameGraph):
             accepted = cache.insert(stamp_ns, values, parent_id)
             retry = None
             if accepted:
-                self._authority[child_id] = authority
+                cache.authority = authority
                 if self._waiters:
                     retry = self._wake(child)
         if not accepted:
@@ -354,7 +353,7 @@ class BufferCore(FrameGraph):
             accepted = int(stamp_arr.shape[0]) - len(rejected)
             retry = None
             if accepted:
-                self._authority[child_id] = authority
+                cache.authority = authority
                 if self._waiters:
                     retry = self._wake(child)
         for k in rejected:
