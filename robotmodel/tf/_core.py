@@ -12,11 +12,12 @@ from __future__ import annotations
 
 import threading
 from bisect import bisect_right
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Sequence
 from math import acos as _acos
 from math import copysign as _copysign
 from math import sin as _sin
 from math import sqrt as _sqrt
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -246,6 +247,12 @@ class BufferCore(FrameGraph):
         NaN, a zero quaternion, data older than the window (TF_OLD_DATA). A stamp outside
         [0, 2**63) ns or a pose that is not 7 numbers raises InvalidArgumentException.
         """
+        checked = self._checked(parent, child, stamp_ns, pose, authority)
+        return checked is not None and self._store(*checked, authority, is_static)
+
+    def _checked(self, parent: str, child: str, stamp_ns: int, pose: Iterable[float],
+                 authority: str) -> tuple[str, str, int, Pose7] | None:
+        """The checks of :meth:`insert`: the sample to store, or None (logged) for what tf2 drops."""
         if type(parent) is not str or type(child) is not str:
             raise InvalidArgumentException(f"Invalid argument passed to setTransform - frame ids must be strings, "
                                            f"got {parent!r} and {child!r}")
@@ -274,37 +281,79 @@ class BufferCore(FrameGraph):
             ids_ok = frame_ids_ok(parent, child, authority)
             values = canonical_pose(pose, child, authority)
             if values is None or not ids_ok:
-                return False
-        return self._store(parent, child, stamp_ns, values, authority, is_static)
+                return None
+        return parent, child, stamp_ns, values
+
+    def insert_records(self, records: Iterable[Sequence[Any]], authority: str,
+                       is_static: bool = False) -> list[tuple[Any, TransformException]]:
+        """Insert ``(parent, child, stamp_ns, pose)`` records (a decoded TFMessage), each as :meth:`insert` would.
+
+        The same checks, logs and results as one insert per record, with the lock taken once
+        (so within one call the checks' texts come before TF_OLD_DATA's); waiting lookups are
+        retried once all are in. Returns the records that raised, with the
+        exception (the others still go in, as tf2_ros's listener has it).
+        """
+        failures: list[tuple[Any, TransformException]] = []
+        items = []
+        checked = self._checked
+        for rec in records:
+            try:
+                item = checked(rec[0], rec[1], rec[2], rec[3], authority)
+            except TransformException as exc:
+                failures.append((rec, exc))
+                continue
+            if item is not None:
+                items.append(item)
+        rejected = []
+        retries: list[Callable[[], None]] = []
+        with self._lock:
+            put = self._put
+            for parent, child, stamp_ns, values in items:
+                accepted, retry = put(parent, child, stamp_ns, values, authority, is_static)
+                if not accepted:
+                    rejected.append((child, stamp_ns))
+                elif retry:
+                    retries.extend(retry)
+        for child, stamp_ns in rejected:
+            _log_old_data(child, stamp_ns, authority)
+        for request in dict.fromkeys(retries):
+            request()
+        return failures
 
     def _store(self, parent: str, child: str, stamp_ns: int, values: Pose7, authority: str, is_static: bool) -> bool:
         """Insert a checked sample (valid names without '/', stamp in range, canonical pose)."""
         with self._lock:
-            child_id = self._ids.get(child) or self._intern(child)
-            cache = self._caches[child_id]
-            # ROS 2 switches a frame between static and dynamic, dropping its history.
-            if is_static:
-                if cache.__class__ is not StaticCache:
-                    cache = self._caches[child_id] = StaticCache(values, 0)
-                    self._topology += 1
-            elif cache.__class__ is not TimeCache:
-                cache = self._caches[child_id] = TimeCache(self.cache_time_ns)
-                self._topology += 1
-            parent_id = self._ids.get(parent) or self._intern(parent)
-            if cache.parent != parent_id and cache.parent > 0:
-                self._topology += 1  # a new parent: chains through this frame change
-            accepted = cache.insert(stamp_ns, values, parent_id)
-            retry = None
-            if accepted:
-                cache.authority = authority
-                if self._waiters:
-                    retry = self._wake(child)
+            accepted, retry = self._put(parent, child, stamp_ns, values, authority, is_static)
         if not accepted:
             _log_old_data(child, stamp_ns, authority)
         elif retry:
             for request in retry:
                 request()
         return accepted
+
+    def _put(self, parent: str, child: str, stamp_ns: int, values: Pose7, authority: str,
+             is_static: bool) -> tuple[bool, list[Callable[[], None]] | None]:
+        """Store a checked sample (the lock held): whether it was accepted, and the waiting requests to retry."""
+        child_id = self._ids.get(child) or self._intern(child)
+        cache = self._caches[child_id]
+        # ROS 2 switches a frame between static and dynamic, dropping its history.
+        if is_static:
+            if cache.__class__ is not StaticCache:
+                cache = self._caches[child_id] = StaticCache(values, 0)
+                self._topology += 1
+        elif cache.__class__ is not TimeCache:
+            cache = self._caches[child_id] = TimeCache(self.cache_time_ns)
+            self._topology += 1
+        parent_id = self._ids.get(parent) or self._intern(parent)
+        if cache.parent != parent_id and cache.parent > 0:
+            self._topology += 1  # a new parent: chains through this frame change
+        accepted = cache.insert(stamp_ns, values, parent_id)
+        retry = None
+        if accepted:
+            cache.authority = authority
+            if self._waiters:
+                retry = self._wake(child)
+        return accepted, retry
 
     def insert_many(self, parent: str, child: str, stamps: npt.ArrayLike, poses: npt.ArrayLike,
                     authority: str) -> int:
