@@ -32,7 +32,7 @@ ROBOT = Path(__file__).resolve().parent.parent / "urdf" / "diffbot.urdf.xacro"
 
 
 def rss_mib(pid: int) -> float:
-    with open(f"/proc/{pid}/status") as f:
+    with Path(f"/proc/{pid}/status").open() as f:
         for line in f:
             if line.startswith("VmRSS:"):
                 return int(line.split()[1]) / 1024
