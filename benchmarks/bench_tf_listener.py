@@ -51,7 +51,8 @@ def listen(impl: str) -> int:
             import yaml
 
             info = yaml.safe_load(buffer.all_frames_as_yaml())["f0"]
-            return round(info["rate"] * info["buffer_length"])
+            count: float = info["rate"] * info["buffer_length"]
+            return round(count)
     else:
         from robotmodel.bus import Node
         from robotmodel.tf import Buffer, Time
