@@ -294,11 +294,27 @@ class BufferCore(FrameGraph):
         exception (the others still go in, as tf2_ros's listener has it).
         """
         failures: list[tuple[Any, TransformException]] = []
-        items = []
+        items: list[Sequence[Any]] = []
         checked = self._checked
         for rec in records:
+            parent, child, stamp, pose = rec
+            # The common record checked here as insert checks it (see set_transform).
+            if (type(parent) is str and type(child) is str and parent and child and parent != child
+                    and parent[0] != "/" and child[0] != "/" and type(stamp) is int and 0 <= stamp < STAMP_LIMIT
+                    and type(pose) is tuple and len(pose) == 7):
+                x, y, z, rx, ry, rz, rw = pose
+                if type(x) is float and type(rw) is float:
+                    n2 = rx * rx + ry * ry + rz * rz + rw * rw
+                    total = x + y + z + n2
+                    if total - total == 0.0 and abs(n2 - 1.0) < 1e-12:
+                        if rw > 0.5:
+                            items.append(rec)
+                            continue
+                        if rw < -0.5:
+                            items.append((parent, child, stamp, (x, y, z, -rx, -ry, -rz, -rw)))
+                            continue
             try:
-                item = checked(rec[0], rec[1], rec[2], rec[3], authority)
+                item = checked(parent, child, stamp, pose, authority)
             except TransformException as exc:
                 failures.append((rec, exc))
                 continue
