@@ -11,12 +11,7 @@ frames. Nothing outside the buffer (log handlers included) runs under the lock.
 from __future__ import annotations
 
 import threading
-from bisect import bisect_right
 from collections.abc import Callable, Iterable, Sequence
-from math import acos as _acos
-from math import copysign as _copysign
-from math import sin as _sin
-from math import sqrt as _sqrt
 from typing import Any
 
 import numpy as np
@@ -31,7 +26,7 @@ from robotmodel.errors import (
 from robotmodel.msgs.geometry_msgs import TransformStamped
 from robotmodel.spatial import IDENTITY_POSE as IDENTITY
 from robotmodel.spatial import Pose7, pose_compose, pose_inverse, quat_canonical
-from robotmodel.tf._cache import _ROW, CacheMiss, StaticCache, TimeCache, _unpack, _unpack_pair, format_time
+from robotmodel.tf._cache import CacheMiss, StaticCache, TimeCache, format_time
 from robotmodel.tf._checks import (
     STAMP_LIMIT,
     canonical_pose,
@@ -44,142 +39,18 @@ from robotmodel.tf._checks import (
 )
 from robotmodel.tf._checks import stamp_ns as check_stamp
 from robotmodel.tf._graph import MAX_GRAPH_DEPTH, FrameGraph
+from robotmodel.tf._plan import NONE, UP, Plan, build_plan, chain_pose, latest_common, run_plan
 
 __all__ = ["MAX_GRAPH_DEPTH", "BufferCore"]
 
 _DEFAULT_CACHE_NS = 10_000_000_000
+_MAX_PLANS = 10_000
 
 
 def _log_old_data(child: str, stamp: int, authority: str) -> None:
     log.warning("TF_OLD_DATA ignoring data from the past for frame %s at time %s according to "
                 "authority %s\nPossible reasons are listed at "
                 "http://wiki.ros.org/tf/Errors%%20explained", child, format_time(stamp), authority)
-
-
-_UP, _DOWN, _BOTH, _NONE = 0, 1, 2, 3
-_MAX_PLANS = 10_000
-# (topology version, kind, source-side links, target-side links, the dynamic links whose newest
-# stamps give the latest common time); links in walking order, each with one parent.
-_Plan = tuple[int, int, tuple["TimeCache | StaticCache", ...], tuple["TimeCache | StaticCache", ...],
-              tuple[TimeCache, ...]]
-
-
-def _dynamic(links: list[TimeCache | StaticCache]) -> tuple[TimeCache, ...]:
-    return tuple(c for c in links if isinstance(c, TimeCache))
-
-
-def _latest(links: tuple[TimeCache, ...]) -> int:
-    """_latest_common_time over a plan's links: the oldest of their newest stamps (0 when none)."""
-    common = 0
-    for cache in links:
-        stamp = cache._newest
-        if stamp and (stamp < common or not common):
-            common = stamp
-    return common
-
-
-def _chain(links: tuple[TimeCache | StaticCache, ...], t: int, final: bool) -> Pose7 | None:
-    """The links' poses at ``t`` composed as :meth:`BufferCore._walk` does; None where a link has no data.
-
-    ``final``: with the quaternion in tf2's canonical form (the lookup's result).
-
-    The hot path of every lookup: :meth:`TimeCache.pose_at` and ``pose_compose`` inlined, with
-    the same operations in the same order (the same results to the bit), and no tuple per step.
-    """
-    first = True
-    ax = ay = az = qx = qy = qz = qw = 0.0
-    t0 = t1 = i = start = -1
-    r = u = 0.0
-    for cache in links:
-        if cache.__class__ is TimeCache:
-            oldest, newest = cache._oldest, cache._newest
-            if oldest < t < newest:
-                smv = cache._smv
-                # Links published together hold the same stamps: the previous link's bracket
-                # [t0, t1) around t, if this cache has it at the same place, is this one's too.
-                i += cache._start - start
-                start = cache._start
-                if not (0 <= i < cache._end - 1 and smv[i] == t0 and smv[i + 1] == t1):
-                    end = cache._end
-                    i = start + (t - oldest) * (end - 1 - start) // (newest - oldest)
-                    t0 = smv[i]
-                    if t0 <= t:
-                        t1 = smv[i + 1]
-                        if t1 <= t:
-                            i = bisect_right(smv, t, i + 1, end) - 1
-                            t0, t1 = smv[i], smv[i + 1]
-                    else:
-                        i = bisect_right(smv, t, start, i) - 1
-                        t0, t1 = smv[i], smv[i + 1]
-                    r = (t - t0) / (t1 - t0)
-                    u = 1.0 - r
-                bx, by, bz, px, py, pz, pw, cx, cy, cz, rx, ry, rz, rw = _unpack_pair(smv, cache._pbase + i * _ROW)
-                dot = px * rx + py * ry + pz * rz + pw * rw
-                theta = _acos(dot if 0.0 <= dot <= 1.0 else min(1.0, abs(dot)))
-                bx, by, bz = bx * u + cx * r, by * u + cy * r, bz * u + cz * r
-                if theta != 0.0:
-                    sn = _sin(theta)
-                    wa = _sin(u * theta) / sn
-                    wb = _sin(r * theta) / sn
-                    if dot < 0.0:
-                        wb = -wb
-                    px, py, pz, pw = px * wa + rx * wb, py * wa + ry * wb, pz * wa + rz * wb, pw * wa + rw * wb
-            elif t == newest and cache._end > cache._start:
-                bx, by, bz, px, py, pz, pw = _unpack(cache._smv, cache._pbase + (cache._end - 1) * _ROW)
-            else:
-                return None
-        else:
-            bx, by, bz, px, py, pz, pw = cache.pose  # type: ignore[union-attr]
-        if first:
-            ax, ay, az, qx, qy, qz, qw = bx, by, bz, px, py, pz, pw
-            first = False
-            continue
-        # (b, p) ∘ (a, q): pose_compose(link, accumulated).
-        cx = py * az - pz * ay
-        cy = pz * ax - px * az
-        cz = px * ay - py * ax
-        ax, ay, az, qx, qy, qz, qw = (
-            bx + ax + 2.0 * (pw * cx + py * cz - pz * cy),
-            by + ay + 2.0 * (pw * cy + pz * cx - px * cz),
-            bz + az + 2.0 * (pw * cz + px * cy - py * cx),
-            pw * qx + px * qw + py * qz - pz * qy,
-            pw * qy - px * qz + py * qw + pz * qx,
-            pw * qz + px * qy - py * qx + pz * qw,
-            pw * qw - px * qx - py * qy - pz * qz,
-        )
-    if first:
-        return None
-    if not final:
-        return ax, ay, az, qx, qy, qz, qw
-    # quat_canonical inlined where its branch is certain: w dominant (a clearly positive
-    # matrix trace: 4w^2 > |q|^2, with a margin far above rounding) and |q|^2 well inside the range.
-    n2 = qx * qx + qy * qy + qz * qz + qw * qw
-    if qw * qw > 0.2501 * n2 and 1e-300 < n2 < 1e300:
-        inv = _copysign(1.0 / _sqrt(n2), qw)
-        return ax, ay, az, qx * inv, qy * inv, qz * inv, qw * inv
-    qx, qy, qz, qw = quat_canonical((qx, qy, qz, qw))
-    return ax, ay, az, qx, qy, qz, qw
-
-
-def _run(plan: _Plan, t: int) -> Pose7 | None:
-    """A plan's result at ``t`` (the lookup's pose); None: ask :meth:`BufferCore._walk`."""
-    kind = plan[1]
-    if kind == _UP:
-        return _chain(plan[2], t, True)
-    if kind == _NONE:
-        return None
-    target_acc = _chain(plan[3], t, False)
-    if target_acc is None:
-        return None
-    if kind == _DOWN:
-        pose = pose_inverse(target_acc)
-    else:
-        source_acc = _chain(plan[2], t, False)
-        if source_acc is None:
-            return None
-        pose = pose_compose(pose_inverse(target_acc), source_acc)
-    qx, qy, qz, qw = quat_canonical(pose[3:])
-    return pose[0], pose[1], pose[2], qx, qy, qz, qw
 
 
 class BufferCore(FrameGraph):
@@ -199,9 +70,9 @@ class BufferCore(FrameGraph):
         self._caches: list[TimeCache | StaticCache | None] = [None]
         self._lock = threading.RLock()
         # The chain walk of a (target, source) pair, kept while no insert changes the shape of the
-        # tree (a cache created or replaced, a frame's parent changed, a cache cleared): see _plan.
+        # tree (a cache created or replaced, a frame's parent changed, a cache cleared): see _plan.py.
         self._topology = 0
-        self._plans: dict[tuple[str, str], _Plan] = {}
+        self._plans: dict[tuple[str, str], Plan] = {}
         # Waiting lookups by the frame names they depend on (tf2's transformable requests).
         # A waiter is a sleeping thread's Condition or an asynchronous request's retry callable,
         # which runs after the inserting thread has released the lock.
@@ -475,8 +346,8 @@ class BufferCore(FrameGraph):
                 plan = None
             current = plan is not None and plan[0] == self._topology
             if current:
-                t = time_ns or _latest(plan[4])  # type: ignore[index]
-                pose = _chain(plan[2], t, True) if plan[1] == _UP else _run(plan, t)  # type: ignore[index,arg-type]
+                t = time_ns or latest_common(plan[4])  # type: ignore[index]
+                pose = chain_pose(plan[2], t, True) if plan[1] == UP else run_plan(plan, t)  # type: ignore[index,arg-type]
                 if pose is not None:
                     return pose, t
             if target == source:
@@ -496,14 +367,14 @@ class BufferCore(FrameGraph):
             if not source_id or source[0] == "/":
                 source_id = self._validate(source, "lookupTransform argument source_frame")
             if not current:
-                plan = self._plan(target_id, source_id)
-                if len(self._plans) >= _MAX_PLANS:
+                plan = build_plan(self._caches, target_id, source_id, self._topology)
+                if len(self._plans) >= _MAX_PLANS:  # a bound for buffers asked about very many pairs
                     self._plans.clear()
                 self._plans[target, source] = plan
-                if plan[1] != _NONE:
+                if plan[1] != NONE:
                     if time_ns == 0:
-                        time_ns = _latest(plan[4])
-                    pose = _run(plan, time_ns)
+                        time_ns = latest_common(plan[4])
+                    pose = run_plan(plan, time_ns)
                     if pose is not None:
                         return pose, time_ns
             if time_ns == 0:
@@ -535,64 +406,6 @@ class BufferCore(FrameGraph):
             pose = pose_compose(target_fixed, fixed_source)
             qx, qy, qz, qw = quat_canonical(pose[3:])
             return (pose[0], pose[1], pose[2], qx, qy, qz, qw), stamp
-
-    def _plan(self, target_id: int, source_id: int) -> _Plan:
-        """The links :meth:`_walk` and :meth:`_latest_common_time` would visit, when that is the same at every time.
-
-        Walks the tree as :meth:`_walk` does, by each cache's one parent (``parent`` > 0); None
-        when a cache on the way has none (empty, or more than one parent over time), or when
-        the walk would raise. A miss at lookup time still goes to :meth:`_walk`, for its error.
-        """
-        none: _Plan = (self._topology, _NONE, (), (), ())
-        caches = self._caches
-        up: list[TimeCache | StaticCache] = []
-        frame, top, depth = source_id, 0, 0
-        while frame:
-            cache = caches[frame]
-            top = frame
-            if cache is None or frame == target_id:
-                break
-            parent = cache.parent
-            if parent <= 0:
-                return none
-            up.append(cache)
-            frame = parent
-            depth += 1
-            if depth > MAX_GRAPH_DEPTH:
-                return none
-        if frame == target_id:
-            return self._topology, _UP, tuple(up), (), _dynamic(up)
-        down: list[TimeCache | StaticCache] = []
-        frame, depth = target_id, 0
-        while frame != top:
-            cache = caches[frame]
-            if cache is None:
-                return none
-            parent = cache.parent
-            if parent <= 0:
-                return none
-            if frame == source_id:
-                return self._topology, _DOWN, (), tuple(down), _dynamic(down)
-            down.append(cache)
-            frame = parent
-            depth += 1
-            if depth > MAX_GRAPH_DEPTH:
-                return none
-        if not down:
-            return none
-        if frame == source_id:
-            return self._topology, _DOWN, (), tuple(down), _dynamic(down)
-        # The latest common time reads the links below the common ancestor on both sides.
-        parents = [c.parent for c in up]
-        below: list[TimeCache | StaticCache] = []
-        for cache in down:
-            below.append(cache)
-            if cache.parent in parents:
-                below.extend(up[:parents.index(cache.parent) + 1])
-                break
-        else:
-            return none
-        return self._topology, _BOTH, tuple(up), tuple(down), _dynamic(below)
 
     def _walk(self, time_ns: int, target_id: int, source_id: int, target: str, source: str) -> Pose7:
         caches = self._caches
