@@ -288,11 +288,11 @@ class Buffer(BufferCore):
         """
         if isinstance(times, np.ndarray) and times.size < 4 and times.dtype.kind == "i":
             times = times.reshape(-1).tolist()
-        if isinstance(times, list) and len(times) < 4 and all(type(t) is int for t in times):
-            # A few stamps: scalar lookups, without NumPy's per-call cost (same checks and errors).
-            poses = [self.lookup_ns(target_frame, source_frame, t)[0] for t in times]
-            if poses:
-                return np.array([p[:3] for p in poses]), np.array([p[3:] for p in poses])
+        if isinstance(times, list) and 0 < len(times) < 4 and all(type(t) is int for t in times):
+            # A few stamps: scalar lookups, without NumPy's per-call cost (same checks and errors);
+            # one (N, 7) array, returned as its two column views.
+            poses = np.array([self.lookup_ns(target_frame, source_frame, t)[0] for t in times])
+            return poses[:, :3], poses[:, 3:]
         stamps = checked_stamps(times, "lookup_transforms argument times")
         with self._lock:
             return lookup_many(self, target_frame, source_frame, stamps)

@@ -1,17 +1,19 @@
 """Per-child-frame storage: tf2's TimeCache (time window, no extrapolation) and StaticCache.
 
-A TimeCache keeps its samples in preallocated arrays, ascending by stamp: stamps
-(int64 ns), poses ((n, 7) float64: x, y, z, qx, qy, qz, qw) and parent ids (int32),
-68 bytes a sample plus at most 1/8 spare capacity. The live samples are the slice
-``[start, end)``: pruning only moves ``start``, appending only moves ``end``, and the
-arrays are compacted or regrown when ``end`` reaches the capacity, which costs
-amortized O(1) per insert at any window length. Scalar code reads and writes through
-memoryviews (no NumPy call per sample); vectorized lookups get zero-copy NumPy views.
+A TimeCache keeps its samples in one preallocated array, ascending by stamp: stamps (int64
+ns) and poses (7 doubles: x, y, z, qx, qy, qz, qw), 64 bytes a sample plus at most 1/8
+spare capacity; parent ids (int32) get an array of their own only once a frame's samples
+have more than one parent. The live samples are the slice ``[start, end)``: pruning only
+moves ``start``, appending only moves ``end``, and the storage is compacted or regrown
+when ``end`` reaches the capacity, which costs amortized O(1) per insert at any window
+length. Scalar code reads and writes the array.array directly (no NumPy call per sample);
+vectorized lookups get zero-copy NumPy views.
 """
 
 from __future__ import annotations
 
 import struct
+from array import array
 from bisect import bisect_left, bisect_right
 from dataclasses import dataclass
 
@@ -25,9 +27,12 @@ __all__ = ["CacheMiss", "StaticCache", "TimeCache", "format_time"]
 
 _POSE = struct.Struct("7d")
 _unpack = _POSE.unpack_from
+_unpack_pair = struct.Struct("14d").unpack_from
+
 _pack = _POSE.pack_into
 _ROW = _POSE.size
 _MIN_SPARE = 16
+_SLOTS, _PARENTS = array("q", [0]), array("i", [0])
 
 
 def format_time(ns: int) -> str:
@@ -53,49 +58,51 @@ def _no_data(t: int, only: int) -> CacheMiss:
 class TimeCache:
     """Samples of one child frame within a time window (``None``: unbounded, never pruned)."""
 
-    __slots__ = (
-        "_cap",
-        "_end",
-        "_newest",
-        "_oldest",
-        "_parents",
-        "_pmv",
-        "_poses",
-        "_qmv",
-        "_smv",
-        "_stamps",
-        "_start",
-        "window",
-    )
+    __slots__ = ("_cap", "_end", "_newest", "_oldest", "_pbase", "_qmv", "_smv", "_start", "authority", "parent",
+                 "window")
 
-    _stamps: npt.NDArray[np.int64]
-    _poses: npt.NDArray[np.float64]
-    _parents: npt.NDArray[np.int32]
-    _smv: memoryview
-    _pmv: memoryview
-    _qmv: memoryview
+    # One fixed-size array.array of 8 * cap int64 slots: the stamps in [0, cap), then the poses
+    # (7 doubles a row) from byte _pbase = 8 * cap on. Parent ids get their own array only once
+    # two samples differ (until then every sample has ``parent``). A frame with one sample
+    # costs ~250 bytes (a NumPy array or memoryview costs about that alone); NumPy code gets
+    # zero-copy views on demand.
+    _smv: array[int]
+    _qmv: array[int] | None
+    _cap: int
+    _pbase: int
 
     def __init__(self, window_ns: int | None) -> None:
         self.window = window_ns
+        self.authority: str | None = None  # who sent the newest accepted sample (view_frames' broadcaster)
+        # The parent id every stored sample has (0 while empty), -1 once two differ: a cache with
+        # one parent gives the same chain at every time, which lets BufferCore reuse its walk.
+        self.parent = 0
+        self._qmv = None
         self._start = self._end = 0
         self._newest = self._oldest = 0  # stamps at end - 1 and start, valid when not empty
-        self._allocate(_MIN_SPARE)
+        self._allocate(1)
 
     # ----------------------------------------------------------------- storage
+    def _views(self) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.float64], npt.NDArray[np.int32] | None]:
+        """Zero-copy NumPy views of the whole storage (capacity included); no parents while they are one."""
+        cap, smv = self._cap, self._smv
+        parents = None if self._qmv is None else np.frombuffer(self._qmv, dtype=np.int32)
+        return (np.frombuffer(smv, dtype=np.int64, count=cap),
+                np.frombuffer(smv, dtype=np.float64, count=7 * cap, offset=8 * cap).reshape(cap, 7), parents)
+
     def _allocate(self, cap: int) -> None:
-        live = self._end - self._start
-        stamps = np.empty(cap, dtype=np.int64)
-        poses = np.empty((cap, 7), dtype=np.float64)
-        parents = np.empty(cap, dtype=np.int32)
+        start, end = self._start, self._end
+        live = end - start
+        smv = _SLOTS * (8 * cap)
+        qmv = None if self._qmv is None else _PARENTS * cap
         if live:
-            stamps[:live] = self._stamps[self._start:self._end]
-            poses[:live] = self._poses[self._start:self._end]
-            parents[:live] = self._parents[self._start:self._end]
-        self._stamps, self._poses, self._parents = stamps, poses, parents
-        self._smv = stamps.data
-        self._pmv = poses.data.cast("B")
-        self._qmv = parents.data
-        self._cap = cap
+            old, old_cap = self._smv, self._cap
+            smv[:live] = old[start:end]
+            smv[cap:cap + 7 * live] = old[old_cap + 7 * start:old_cap + 7 * end]
+            if qmv is not None and self._qmv is not None:
+                qmv[:live] = self._qmv[start:end]
+        self._smv, self._qmv = smv, qmv
+        self._cap, self._pbase = cap, 8 * cap
         self._start, self._end = 0, live
 
     def _make_room(self, extra: int) -> None:
@@ -103,13 +110,26 @@ class TimeCache:
         start, end = self._start, self._end
         live = end - start
         need = live + extra
-        if start and need <= self._cap and start >= live >> 3 and self._cap <= 4 * need + 64:
-            self._stamps[:live] = self._stamps[start:end]
-            self._poses[:live] = self._poses[start:end]
-            self._parents[:live] = self._parents[start:end]
+        cap = self._cap
+        if start and need <= cap and start >= live >> 3 and cap <= 4 * need + 64:
+            smv = self._smv
+            smv[:live] = smv[start:end]
+            smv[cap:cap + 7 * live] = smv[cap + 7 * start:cap + 7 * end]
+            if self._qmv is not None:
+                self._qmv[:live] = self._qmv[start:end]
             self._start, self._end = 0, live
         else:
             self._allocate(need + max(need >> 3, _MIN_SPARE))
+
+    def _set_parent(self, parent: int) -> None:
+        """Before storing a sample with ``parent``: one parent for all, or an array of them from now on."""
+        if self._end == self._start:
+            self.parent, self._qmv = parent, None
+        elif self._qmv is None:
+            qmv = _PARENTS * self._cap
+            if self.parent:
+                np.frombuffer(qmv, dtype=np.int32)[self._start:self._end] = self.parent
+            self._qmv, self.parent = qmv, -1
 
     def _prune(self, limit: int) -> None:
         """Drop samples older than ``limit`` (there is at least one, and the newest stays)."""
@@ -123,30 +143,41 @@ class TimeCache:
     def insert(self, stamp: int, pose: Pose7, parent: int) -> bool:
         """Insert a sample as tf2 does; False when it is older than the window (TF_OLD_DATA)."""
         start, end = self._start, self._end
+        if parent != self.parent:
+            self._set_parent(parent)
         if end == start:
-            self._smv[0] = stamp
-            _pack(self._pmv, 0, *pose)
-            self._qmv[0] = parent
+            smv = self._smv
+            smv[0] = stamp
+            _pack(smv, self._pbase, *pose)
             self._start, self._end = 0, 1
-            self._newest = self._oldest = stamp
+            # Stamps are kept as the array's own ints, never the caller's object: that one was
+            # typically decoded with a whole message's throw-away objects and would pin their memory.
+            self._newest = self._oldest = smv[0]
             return True
         latest = self._newest
         if self.window is not None:
             # Prune with the newest stamp before this insert, as tf2 does (lazy by one insert).
             limit = latest - self.window
             if self._oldest < limit:
-                self._prune(limit)
+                k = start + 1
+                if self._smv[k] >= limit:  # one sample out of the window: the steady state
+                    self._start = k
+                    self._oldest = self._smv[k]
+                else:
+                    self._prune(limit)
             if stamp < limit:
                 return False
         if stamp > latest:
             if end == self._cap:
                 self._make_room(1)
                 end = self._end
-            self._smv[end] = stamp
-            _pack(self._pmv, end * _ROW, *pose)
-            self._qmv[end] = parent
+            smv = self._smv
+            smv[end] = stamp
+            _pack(smv, self._pbase + end * _ROW, *pose)
+            if self._qmv is not None:
+                self._qmv[end] = parent
             self._end = end + 1
-            self._newest = stamp
+            self._newest = smv[end]
             return True
         return self._insert_at_or_before_newest(stamp, pose, parent)
 
@@ -156,28 +187,31 @@ class TimeCache:
         k = pos - 1
         # An exactly equal sample (stamp, pose and parent) is not stored again, but counts as success.
         while k >= self._start and smv[k] == stamp:
-            if self._qmv[k] == parent and _unpack(self._pmv, k * _ROW) == pose:
+            if (self._qmv is None or self._qmv[k] == parent) and _unpack(smv, self._pbase + k * _ROW) == pose:
                 return True
             k -= 1
         start = self._start
         if pos == start and start:
             pos = self._start = start - 1  # older than everything: room in front
-            self._oldest = stamp
         else:
             if self._end == self._cap:
                 self._make_room(1)
                 pos -= start - self._start
-            end = self._end
+            end, cap = self._end, self._cap
+            smv = self._smv
             if pos < end:
-                self._stamps[pos + 1:end + 1] = self._stamps[pos:end]
-                self._poses[pos + 1:end + 1] = self._poses[pos:end]
-                self._parents[pos + 1:end + 1] = self._parents[pos:end]
+                smv[pos + 1:end + 1] = smv[pos:end]
+                smv[cap + 7 * pos + 7:cap + 7 * end + 7] = smv[cap + 7 * pos:cap + 7 * end]
+                if self._qmv is not None:
+                    self._qmv[pos + 1:end + 1] = self._qmv[pos:end]
             self._end = end + 1
-            if pos == self._start:
-                self._oldest = stamp
-        self._smv[pos] = stamp
-        _pack(self._pmv, pos * _ROW, *pose)
-        self._qmv[pos] = parent
+        smv = self._smv
+        smv[pos] = stamp
+        if pos == self._start:
+            self._oldest = smv[pos]
+        _pack(smv, self._pbase + pos * _ROW, *pose)
+        if self._qmv is not None:
+            self._qmv[pos] = parent
         return True
 
     def insert_many(self, stamps: npt.NDArray[np.int64], poses: npt.NDArray[np.float64],
@@ -193,6 +227,8 @@ class TimeCache:
         if n == 0:
             return []
         empty = self._end == self._start
+        if parent != self.parent:
+            self._set_parent(parent)
         increasing = n == 1 or bool((stamps[1:] > stamps[:-1]).all())
         if not increasing or not (empty or int(stamps[0]) > self._newest):
             if self.window is None:
@@ -216,13 +252,16 @@ class TimeCache:
         if self._end + n > self._cap:
             self._make_room(n)
         end = self._end
-        self._stamps[end:end + n] = stamps
-        self._poses[end:end + n] = poses
-        self._parents[end:end + n] = parent
+        all_stamps, all_poses, all_parents = self._views()
+        all_stamps[end:end + n] = stamps
+        all_poses[end:end + n] = poses
+        if all_parents is not None:
+            all_parents[end:end + n] = parent
+        del all_stamps, all_poses, all_parents
         self._end = end + n
-        self._newest = int(stamps[-1])
+        self._newest = self._smv[end + n - 1]
         if empty:
-            self._oldest = int(stamps[0])
+            self._oldest = self._smv[end]
         return []
 
     def _merge(self, stamps: npt.NDArray[np.int64], poses: npt.NDArray[np.float64], parent: int) -> None:
@@ -251,21 +290,26 @@ class TimeCache:
                 seen[key] = None
             order = order[keep]
         live = order.shape[0]
+        parents = all_parents[order]
         self._start = self._end = 0
+        self._qmv, self.parent = None, int(parents[0])
         self._allocate(live + max(live >> 3, _MIN_SPARE))
-        self._stamps[:live] = all_stamps[order]
-        self._poses[:live] = all_poses[order]
-        self._parents[:live] = all_parents[order]
+        new_stamps, new_poses, _ = self._views()
+        new_stamps[:live] = all_stamps[order]
+        new_poses[:live] = all_poses[order]
+        if (parents != parents[0]).any():
+            self._qmv, self.parent = _PARENTS * self._cap, -1
+            np.frombuffer(self._qmv, dtype=np.int32)[:live] = parents
         self._end = live
-        self._oldest, self._newest = int(self._stamps[0]), int(self._stamps[live - 1])
+        self._oldest, self._newest = self._smv[0], self._smv[live - 1]
 
     # ------------------------------------------------------------------ lookup
     def sample(self, t: int) -> tuple[Pose7, int] | CacheMiss:
         """(pose, parent id) at time ``t`` (0 = newest), interpolated; or why not."""
         oldest, newest = self._oldest, self._newest
         start, end = self._start, self._end
+        smv, qmv = self._smv, self._qmv
         if oldest < t < newest and end - start > 1:
-            smv = self._smv
             # Most streams are regular: guess the index from the rate, check it, else bisect.
             i = start + (t - oldest) * (end - 1 - start) // (newest - oldest)
             t0 = smv[i]
@@ -277,18 +321,20 @@ class TimeCache:
             else:
                 i = bisect_right(smv, t, start, i) - 1
                 t0, t1 = smv[i], smv[i + 1]
-            qmv = self._qmv
-            parent = qmv[i]
-            pmv, offset = self._pmv, i * _ROW
-            if qmv[i + 1] != parent:
-                return _unpack(pmv, offset), parent  # never interpolate across a parent change
+            offset = self._pbase + i * _ROW
+            if qmv is None:
+                parent = self.parent
+            else:
+                parent = qmv[i]
+                if qmv[i + 1] != parent:
+                    return _unpack(smv, offset), parent  # never interpolate across a parent change
             # Two 7-double reads cost less than one 14-double read and two slices.
-            return pose_interpolate(_unpack(pmv, offset), _unpack(pmv, offset + _ROW), (t - t0) / (t1 - t0)), parent
+            return pose_interpolate(_unpack(smv, offset), _unpack(smv, offset + _ROW), (t - t0) / (t1 - t0)), parent
         if end == start:
             return _no_data(t, 0)
         last = end - 1
         if t in (0, newest):
-            return _unpack(self._pmv, last * _ROW), self._qmv[last]
+            return _unpack(smv, self._pbase + last * _ROW), self.parent if qmv is None else qmv[last]
         if last == start:
             return _no_data(t, newest)
         if t > newest:
@@ -296,7 +342,7 @@ class TimeCache:
                              f"Requested time {format_time(t)} but the latest data is at time {format_time(newest)}",
                              oldest, newest)
         if t == oldest:  # among equal oldest stamps tf2 takes the earliest inserted
-            return _unpack(self._pmv, start * _ROW), self._qmv[start]
+            return _unpack(smv, self._pbase + start * _ROW), self.parent if qmv is None else qmv[start]
         return CacheMiss(ExtrapolationDirection.BACKWARD, "Lookup would require extrapolation into the past.  "
                          f"Requested time {format_time(t)} but the earliest data is at time {format_time(oldest)}",
                          oldest, newest)
@@ -304,13 +350,16 @@ class TimeCache:
     def arrays(self) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.float64], npt.NDArray[np.int32]]:
         """Zero-copy views of the live stamps, poses and parent ids (valid until the next insert)."""
         s, e = self._start, self._end
-        return self._stamps[s:e], self._poses[s:e], self._parents[s:e]
+        stamps, poses, parents = self._views()
+        if parents is None:
+            return stamps[s:e], poses[s:e], np.full(e - s, self.parent, dtype=np.int32)
+        return stamps[s:e], poses[s:e], parents[s:e]
 
     def latest(self) -> tuple[int, int]:
         """(newest stamp, its parent id); (0, 0) when empty."""
         if self._end == self._start:
             return 0, 0
-        return self._newest, self._qmv[self._end - 1]
+        return self._newest, self.parent if self._qmv is None else self._qmv[self._end - 1]
 
     def oldest_stamp(self) -> int:
         """Oldest stamp (0 when empty)."""
@@ -321,26 +370,34 @@ class TimeCache:
 
     def nbytes(self) -> int:
         """Bytes held by the arrays (capacity included)."""
-        return int(self._stamps.nbytes + self._poses.nbytes + self._parents.nbytes)
+        return self._cap * (8 * _SLOTS.itemsize + (0 if self._qmv is None else _PARENTS.itemsize))
 
     def clear(self) -> None:
         """Drop every sample (and the capacity they used)."""
+        self.parent, self._qmv = 0, None
         self._start = self._end = 0
-        self._allocate(_MIN_SPARE)
+        self._allocate(1)
+
+
+def _own(pose: Pose7) -> Pose7:
+    """A copy made now, floats included (see TimeCache.insert: the caller's objects would pin memory)."""
+    x, y, z, qx, qy, qz, qw = pose
+    return x * 1.0, y * 1.0, z * 1.0, qx * 1.0, qy * 1.0, qz * 1.0, qw * 1.0  # * 1.0 keeps -0.0
 
 
 class StaticCache:
     """One sample, valid at every time."""
 
-    __slots__ = ("parent", "pose")
+    __slots__ = ("authority", "parent", "pose")
 
     def __init__(self, pose: Pose7, parent: int) -> None:
-        self.pose = pose
+        self.authority: str | None = None
+        self.pose = _own(pose)
         self.parent = parent
 
     def insert(self, stamp: int, pose: Pose7, parent: int) -> bool:
         """Overwrite the sample (never rejected)."""
-        self.pose, self.parent = pose, parent
+        self.pose, self.parent = _own(pose), parent
         return True
 
     def sample(self, t: int) -> tuple[Pose7, int]:

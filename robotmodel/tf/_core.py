@@ -11,7 +11,8 @@ frames. Nothing outside the buffer (log handlers included) runs under the lock.
 from __future__ import annotations
 
 import threading
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Sequence
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -38,10 +39,12 @@ from robotmodel.tf._checks import (
 )
 from robotmodel.tf._checks import stamp_ns as check_stamp
 from robotmodel.tf._graph import MAX_GRAPH_DEPTH, FrameGraph
+from robotmodel.tf._plan import NONE, UP, Plan, build_plan, chain_pose, latest_common, run_plan
 
 __all__ = ["MAX_GRAPH_DEPTH", "BufferCore"]
 
 _DEFAULT_CACHE_NS = 10_000_000_000
+_MAX_PLANS = 10_000
 
 
 def _log_old_data(child: str, stamp: int, authority: str) -> None:
@@ -65,8 +68,11 @@ class BufferCore(FrameGraph):
         self._ids: dict[str, int] = {"NO_PARENT": 0}
         self._names: list[str] = ["NO_PARENT"]
         self._caches: list[TimeCache | StaticCache | None] = [None]
-        self._authority: dict[int, str] = {}
         self._lock = threading.RLock()
+        # The chain walk of a (target, source) pair, kept while no insert changes the shape of the
+        # tree (a cache created or replaced, a frame's parent changed, a cache cleared): see _plan.py.
+        self._topology = 0
+        self._plans: dict[tuple[str, str], Plan] = {}
         # Waiting lookups by the frame names they depend on (tf2's transformable requests).
         # A waiter is a sleeping thread's Condition or an asynchronous request's retry callable,
         # which runs after the inserting thread has released the lock.
@@ -87,7 +93,22 @@ class BufferCore(FrameGraph):
             ns = stamp.sec * 1_000_000_000 + stamp.nanosec  # a stamp message (checked by insert)
         except (AttributeError, TypeError):
             ns = time_arg_ns(stamp, f'setTransform argument stamp of child_frame_id "{transform.child_frame_id}"')
-        return self.insert(transform.header.frame_id, transform.child_frame_id, ns, pose, authority, is_static)
+        parent, child = transform.header.frame_id, transform.child_frame_id
+        # The common case checked here as insert checks it (a unit quaternion with |w| > 0.5 needs
+        # no canonical form but its sign); anything else goes through insert's full checks.
+        x, rw = pose[0], pose[6]
+        if (type(x) is float and type(rw) is float and type(ns) is int and 0 <= ns < STAMP_LIMIT
+                and type(parent) is str and type(child) is str and parent and child and parent != child
+                and parent[0] != "/" and child[0] != "/"):
+            _, y, z, rx, ry, rz, _ = pose
+            n2 = rx * rx + ry * ry + rz * rz + rw * rw
+            total = x + y + z + n2
+            if total - total == 0.0 and abs(n2 - 1.0) < 1e-12:
+                if rw > 0.5:
+                    return self._store(parent, child, ns, pose, authority, is_static)
+                if rw < -0.5:
+                    return self._store(parent, child, ns, (x, y, z, -rx, -ry, -rz, -rw), authority, is_static)
+        return self.insert(parent, child, ns, pose, authority, is_static)
 
     def insert(self, parent: str, child: str, stamp_ns: int, pose: Iterable[float], authority: str,
                is_static: bool = False) -> bool:
@@ -97,6 +118,12 @@ class BufferCore(FrameGraph):
         NaN, a zero quaternion, data older than the window (TF_OLD_DATA). A stamp outside
         [0, 2**63) ns or a pose that is not 7 numbers raises InvalidArgumentException.
         """
+        checked = self._checked(parent, child, stamp_ns, pose, authority)
+        return checked is not None and self._store(*checked, authority, is_static)
+
+    def _checked(self, parent: str, child: str, stamp_ns: int, pose: Iterable[float],
+                 authority: str) -> tuple[str, str, int, Pose7] | None:
+        """The checks of :meth:`insert`: the sample to store, or None (logged) for what tf2 drops."""
         if type(parent) is not str or type(child) is not str:
             raise InvalidArgumentException(f"Invalid argument passed to setTransform - frame ids must be strings, "
                                            f"got {parent!r} and {child!r}")
@@ -117,35 +144,103 @@ class BufferCore(FrameGraph):
                         # Already a unit quaternion in tf2's sign (w > 0.5: positive matrix trace),
                         # which tf2's matrix round trip returns as is.
                         values = pose
+                    elif rw < -0.5 and abs(n2 - 1.0) < 1e-12:
+                        values = (x, y, z, -rx, -ry, -rz, -rw)  # the same rotation in tf2's sign
                     elif n2 > 0.0:
                         values = (x, y, z, *quat_canonical((rx, ry, rz, rw)))
         if values is None:
             ids_ok = frame_ids_ok(parent, child, authority)
             values = canonical_pose(pose, child, authority)
             if values is None or not ids_ok:
-                return False
+                return None
+        return parent, child, stamp_ns, values
+
+    def insert_records(self, records: Iterable[Sequence[Any]], authority: str,
+                       is_static: bool = False) -> list[tuple[Any, TransformException]]:
+        """Insert ``(parent, child, stamp_ns, pose)`` records (a decoded TFMessage), each as :meth:`insert` would.
+
+        The same checks, logs and results as one insert per record, with the lock taken once
+        (so within one call the checks' texts come before TF_OLD_DATA's); waiting lookups are
+        retried once all are in. Returns the records that raised, with the
+        exception (the others still go in, as tf2_ros's listener has it).
+        """
+        failures: list[tuple[Any, TransformException]] = []
+        items: list[Sequence[Any]] = []
+        checked = self._checked
+        for rec in records:
+            parent, child, stamp, pose = rec
+            # The common record checked here as insert checks it (see set_transform).
+            if (type(parent) is str and type(child) is str and parent and child and parent != child
+                    and parent[0] != "/" and child[0] != "/" and type(stamp) is int and 0 <= stamp < STAMP_LIMIT
+                    and type(pose) is tuple and len(pose) == 7):
+                x, y, z, rx, ry, rz, rw = pose
+                if type(x) is float and type(rw) is float:
+                    n2 = rx * rx + ry * ry + rz * rz + rw * rw
+                    total = x + y + z + n2
+                    if total - total == 0.0 and abs(n2 - 1.0) < 1e-12:
+                        if rw > 0.5:
+                            items.append(rec)
+                            continue
+                        if rw < -0.5:
+                            items.append((parent, child, stamp, (x, y, z, -rx, -ry, -rz, -rw)))
+                            continue
+            try:
+                item = checked(parent, child, stamp, pose, authority)
+            except TransformException as exc:
+                failures.append((rec, exc))
+                continue
+            if item is not None:
+                items.append(item)
+        rejected = []
+        retries: list[Callable[[], None]] = []
         with self._lock:
-            child_id = self._ids.get(child) or self._intern(child)
-            cache = self._caches[child_id]
-            # ROS 2 switches a frame between static and dynamic, dropping its history.
-            if is_static:
-                if not isinstance(cache, StaticCache):
-                    cache = self._caches[child_id] = StaticCache(values, 0)
-            elif not isinstance(cache, TimeCache):
-                cache = self._caches[child_id] = TimeCache(self.cache_time_ns)
-            parent_id = self._ids.get(parent) or self._intern(parent)
-            accepted = cache.insert(stamp_ns, values, parent_id)
-            retry = None
-            if accepted:
-                self._authority[child_id] = authority
-                if self._waiters:
-                    retry = self._wake(child)
+            put = self._put
+            for parent, child, stamp_ns, values in items:
+                accepted, retry = put(parent, child, stamp_ns, values, authority, is_static)
+                if not accepted:
+                    rejected.append((child, stamp_ns))
+                elif retry:
+                    retries.extend(retry)
+        for child, stamp_ns in rejected:
+            _log_old_data(child, stamp_ns, authority)
+        for request in dict.fromkeys(retries):
+            request()
+        return failures
+
+    def _store(self, parent: str, child: str, stamp_ns: int, values: Pose7, authority: str, is_static: bool) -> bool:
+        """Insert a checked sample (valid names without '/', stamp in range, canonical pose)."""
+        with self._lock:
+            accepted, retry = self._put(parent, child, stamp_ns, values, authority, is_static)
         if not accepted:
             _log_old_data(child, stamp_ns, authority)
         elif retry:
             for request in retry:
                 request()
         return accepted
+
+    def _put(self, parent: str, child: str, stamp_ns: int, values: Pose7, authority: str,
+             is_static: bool) -> tuple[bool, list[Callable[[], None]] | None]:
+        """Store a checked sample (the lock held): whether it was accepted, and the waiting requests to retry."""
+        child_id = self._ids.get(child) or self._intern(child)
+        cache = self._caches[child_id]
+        # ROS 2 switches a frame between static and dynamic, dropping its history.
+        if is_static:
+            if cache.__class__ is not StaticCache:
+                cache = self._caches[child_id] = StaticCache(values, 0)
+                self._topology += 1
+        elif cache.__class__ is not TimeCache:
+            cache = self._caches[child_id] = TimeCache(self.cache_time_ns)
+            self._topology += 1
+        parent_id = self._ids.get(parent) or self._intern(parent)
+        if cache.parent != parent_id and cache.parent > 0:
+            self._topology += 1  # a new parent: chains through this frame change
+        accepted = cache.insert(stamp_ns, values, parent_id)
+        retry = None
+        if accepted:
+            cache.authority = authority
+            if self._waiters:
+                retry = self._wake(child)
+        return accepted, retry
 
     def insert_many(self, parent: str, child: str, stamps: npt.ArrayLike, poses: npt.ArrayLike,
                     authority: str) -> int:
@@ -186,12 +281,15 @@ class BufferCore(FrameGraph):
             cache = self._caches[child_id]
             if not isinstance(cache, TimeCache):
                 cache = self._caches[child_id] = TimeCache(self.cache_time_ns)
+                self._topology += 1
             parent_id = self._ids.get(parent) or self._intern(parent)
+            if cache.parent != parent_id and cache.parent > 0:
+                self._topology += 1
             rejected = cache.insert_many(stamp_arr, values, parent_id)
             accepted = int(stamp_arr.shape[0]) - len(rejected)
             retry = None
             if accepted:
-                self._authority[child_id] = authority
+                cache.authority = authority
                 if self._waiters:
                     retry = self._wake(child)
         for k in rejected:
@@ -203,6 +301,10 @@ class BufferCore(FrameGraph):
     def _intern(self, name: str) -> int:
         found = self._ids.get(name)
         if found is None:
+            # The buffer keeps its own copy of a new name, made now: the caller's string was
+            # typically decoded along with a whole message's throw-away objects, and kept, it
+            # would pin the allocator's memory they used (a 100k-frame message: ~50 MiB for good).
+            name = "".join((name, ""))
             found = self._ids[name] = len(self._names)
             self._names.append(name)
             self._caches.append(None)
@@ -238,6 +340,16 @@ class BufferCore(FrameGraph):
         if type(time_ns) is not int or not 0 <= time_ns < STAMP_LIMIT:
             time_ns = int_time_ns(time_ns, "lookupTransform argument time")
         with self._lock:
+            try:
+                plan = self._plans.get((target, source))
+            except TypeError:  # unhashable: not a frame name (the checks below say so)
+                plan = None
+            current = plan is not None and plan[0] == self._topology
+            if current:
+                t = time_ns or latest_common(plan[4])  # type: ignore[index]
+                pose = chain_pose(plan[2], t, True) if plan[1] == UP else run_plan(plan, t)  # type: ignore[index,arg-type]
+                if pose is not None:
+                    return pose, t
             if target == source:
                 stamp = time_ns
                 if stamp == 0 and (fid := self._ids.get(target)):
@@ -254,6 +366,17 @@ class BufferCore(FrameGraph):
                 target_id = self._validate(target, "lookupTransform argument target_frame")
             if not source_id or source[0] == "/":
                 source_id = self._validate(source, "lookupTransform argument source_frame")
+            if not current:
+                plan = build_plan(self._caches, target_id, source_id, self._topology)
+                if len(self._plans) >= _MAX_PLANS:  # a bound for buffers asked about very many pairs
+                    self._plans.clear()
+                self._plans[target, source] = plan
+                if plan[1] != NONE:
+                    if time_ns == 0:
+                        time_ns = latest_common(plan[4])
+                    pose = run_plan(plan, time_ns)
+                    if pose is not None:
+                        return pose, time_ns
             if time_ns == 0:
                 time_ns = self._latest_common_time(target_id, source_id, target, source)
             pose = self._walk(time_ns, target_id, source_id, target, source)
@@ -358,6 +481,8 @@ class BufferCore(FrameGraph):
     def clear(self) -> None:
         """Empty every dynamic cache; static transforms and frame names stay."""
         with self._lock:
+            self._topology += 1
+            self._plans.clear()
             for cache in self._caches:
                 if cache is not None:
                     cache.clear()

@@ -11,6 +11,8 @@ from robotmodel.tf._names import yaml_key, yaml_quoted
 
 __all__ = ["MAX_GRAPH_DEPTH", "FrameGraph"]
 
+_NO_AUTHORITY = "no recorded authority"
+
 #: tf2's bound on any walk up the tree; beyond it the tree must contain a loop.
 MAX_GRAPH_DEPTH = 1000
 
@@ -21,7 +23,6 @@ class FrameGraph:
     _names: list[str]
     _ids: dict[str, int]
     _caches: list[TimeCache | StaticCache | None]
-    _authority: dict[int, str]
     _lock: threading.RLock
 
     def _dependencies(self, requests: Iterable[tuple[str, int]]) -> set[str]:
@@ -93,10 +94,11 @@ class FrameGraph:
                 oldest = cache.oldest_stamp()
                 span = max(newest - oldest, 100_000)
                 rate = len(cache) * 1e9 / span
+                who = _NO_AUTHORITY if cache.authority is None else cache.authority
                 # Names are anyone's choice on the bus: quoted and escaped where tf2's bare
                 # text would not read back as the same string (control characters, quotes, 'true').
                 out.append(f"{yaml_key(self._names[fid])}: \n  parent: {yaml_quoted(self._names[parent])}\n"
-                           f"  broadcaster: {yaml_quoted(self._authority.get(fid, 'no recorded authority'))}\n"
+                           f"  broadcaster: {yaml_quoted(who)}\n"
                            f"  rate: {rate:.3f}\n  most_recent_transform: {format_time(newest)}\n"
                            f"  oldest_transform: {format_time(oldest)}\n")
                 if current_time_ns:

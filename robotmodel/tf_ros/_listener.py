@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING, Any
 
 from robotmodel.errors import MessageError, TransformException
 from robotmodel.msgs import TFMessage
+from robotmodel.tf._memory import BIG_MESSAGE, release_free_memory
 from robotmodel.tf_ros._authority import PublisherNames
 from robotmodel.tf_ros._node import OwnedNode
 
@@ -119,6 +120,9 @@ class TransformListener:
         who = raw.info.publisher if self._authority is None and raw.info.publisher else self._who(gid)
         if not (is_static and self._names is not None):
             self._insert_all(msg if insert is None else records, who, is_static)
+            if insert is not None and len(records) >= BIG_MESSAGE:
+                del records
+                release_free_memory()
             return
         items: list[Any] = list(msg.transforms) if insert is None else records
         with self._static_lock:
@@ -135,14 +139,20 @@ class TransformListener:
         if insert is None:
             (self.static_callback if is_static else self.callback)(data, who)
             return
-        for rec in data:
-            try:
-                insert(rec.parent, rec.child, rec.stamp_ns, rec.pose, who, is_static)
-            except TransformException as exc:
-                # As tf2_ros's listener: one bad transform (e.g. a negative stamp) is reported
-                # and the rest of the message still goes in.
-                self._warn(f"Failure to set received transform from {rec.child} to {rec.parent} "
-                           f"with error: {exc}")
+        insert_records = getattr(self.buffer, "insert_records", None)
+        if insert_records is not None:  # robotmodel's buffer: the whole message under one lock
+            failures = insert_records(data, who, is_static)
+        else:
+            failures = []
+            for rec in data:
+                try:
+                    insert(rec.parent, rec.child, rec.stamp_ns, rec.pose, who, is_static)
+                except TransformException as exc:
+                    failures.append((rec, exc))
+        for rec, error in failures:
+            # As tf2_ros's listener: one bad transform (e.g. a negative stamp) is reported
+            # and the rest of the message still goes in.
+            self._warn(f"Failure to set received transform from {rec.child} to {rec.parent} with error: {error}")
 
     def _reattribute(self, gid: bytes, items: list[Any], name: str) -> None:
         with self._static_lock:
