@@ -10,7 +10,6 @@ from typing import TYPE_CHECKING, Any
 
 from robotmodel.errors import MessageError, TransformException
 from robotmodel.msgs import TFMessage
-from robotmodel.tf._memory import BIG_MESSAGE, release_free_memory
 from robotmodel.tf_ros._authority import PublisherNames
 from robotmodel.tf_ros._node import OwnedNode
 
@@ -120,6 +119,10 @@ class TransformListener:
         who = raw.info.publisher if self._authority is None and raw.info.publisher else self._who(gid)
         if not (is_static and self._names is not None):
             self._insert_all(msg if insert is None else records, who, is_static)
+            # Imported here, not at the top: robotmodel.tf loads numpy, which `--help` must not
+            # (by the first message the buffer has loaded it: this is a dictionary lookup).
+            from robotmodel.tf._memory import BIG_MESSAGE, release_free_memory
+
             if insert is not None and len(records) >= BIG_MESSAGE:
                 del records
                 release_free_memory()

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 import signal
+import subprocess
 import sys
 from pathlib import Path
 
@@ -24,6 +25,8 @@ HERE = Path(__file__).resolve().parent
 LISTENER = HERE / "tf2_listener.py"
 ARM = HERE.parent.parent / "urdf" / "arm.urdf.xacro"
 STATIC_TRANSFORM_PUBLISHER = "/usr/lib/tf2_ros/static_transform_publisher"
+# tf2_tools' echo.py (it needs python3-numpy, which .ci/run installs with ROS 1).
+ECHO = Path("/usr/lib/tf2_tools/echo.py")
 
 
 def robotmodel(ros1: Ros1World, *args: str) -> GroupProc:
@@ -63,14 +66,20 @@ def test_real_static_transform_publisher_to_robotmodel_tf2_echo(ros1: Ros1World)
 
 
 def test_robotmodel_static_transform_publisher_to_a_later_rospy_tf2_listener(ros1: Ros1World) -> None:
-    stp = robotmodel(ros1, "static_transform_publisher", "--x", "1", "--y", "2", "--z", "3", "--yaw", "0.5",
-                     "--frame-id", "map", "--child-frame-id", "odom")
+    """ROS 1's positional form (x y z yaw pitch roll frame child): a rospy tf2 listener and the real
+    tf2_tools echo.py, both started after the one latched message was sent, print it."""
+    stp = robotmodel(ros1, "static_transform_publisher", "1", "2", "3", "0.5", "0", "0", "map", "odom")
     wait_until(lambda: any(topic == "/tf_static" for topic, _ in ros1.master.get_system_state()[0]), 60,
                "robotmodel's /tf_static registration")
     # Started after the one message was sent: only a latched /tf_static reaches it.
     got = listener(ros1, "map", "odom").wait_line(r"^pose map odom (.*)$", 60)
     pose = [float(v) for v in got.group(1).split()]
     assert pose == pytest.approx([1.0, 2.0, 3.0, 0.0, 0.0, math.sin(0.25), math.cos(0.25)], abs=1e-12)
+    if ECHO.exists() and subprocess.run([SYSTEM_PYTHON, "-c", "import numpy"], capture_output=True, check=False).returncode == 0:
+        echo = ros1.start(SYSTEM_PYTHON, str(ECHO), "map", "odom", "-p", "6")
+        echo.wait_line(r"^- Translation: \[1\.000000, 2\.000000, 3\.000000\]$", 60)
+        q = echo.wait_line(r"^- Rotation: in Quaternion \[(.*)\]$", 30).group(1)
+        assert q == ", ".join(f"{v:.6f}" for v in (0.0, 0.0, math.sin(0.25), math.cos(0.25))), q
     assert stp.popen.poll() is None
 
 
