@@ -17,15 +17,15 @@ ROBOTMODEL_RCLPY_PYTHON naming its interpreter)
 
 from __future__ import annotations
 
-import json
 import os
 import random
-import signal
 import subprocess
 import sys
 import tempfile
 from pathlib import Path
 from typing import Any
+
+import _harness
 
 QUICK = "--quick" in sys.argv
 PINGS = 300 if QUICK else 1_000
@@ -40,25 +40,6 @@ _ERRORS_TO = os.environ.get("BENCH_DDS_STDERR")
 ERRORS: Any = Path(_ERRORS_TO).open("a") if _ERRORS_TO else subprocess.DEVNULL  # noqa: SIM115
 
 
-def _start(argv: list[str], env: dict[str, str]) -> subprocess.Popen[str]:
-    return subprocess.Popen(argv, env=env, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=ERRORS,
-                            text=True, start_new_session=True)
-
-
-def _stop(proc: subprocess.Popen[Any]) -> None:
-    if proc.poll() is None:
-        os.killpg(proc.pid, signal.SIGKILL)
-    proc.wait(10)
-
-
-def _line(proc: subprocess.Popen[str], prefix: str) -> str:
-    assert proc.stdout is not None
-    for line in proc.stdout:
-        if line.startswith(prefix):
-            return line
-    raise RuntimeError(f"{proc.args!r} ended without printing {prefix!r}")
-
-
 def run_pair(impl: str, home: str) -> dict[str, Any]:
     """One subscriber and one publisher of ``impl`` in a domain of their own; their merged result lines."""
     env = dict(os.environ, RMW_IMPLEMENTATION=RMWS[impl], ROS_DOMAIN_ID=str(random.randint(120, 200)),
@@ -69,18 +50,8 @@ def run_pair(impl: str, home: str) -> dict[str, Any]:
     if impl == "rclpy":
         env = {k: v for k, v in env.items() if not k.startswith(("PYTHON", "VIRTUAL_ENV"))} | {"PYTHONUNBUFFERED": "1"}
     python = PYTHONS[impl]
-    sub = _start([python, str(PEER), impl, "sub", str(FLOOD)], env)
-    try:
-        _line(sub, "ready")
-        pub = _start([python, str(PEER), impl, "pub", str(PINGS), str(FLOOD)], env)
-        try:
-            result: dict[str, Any] = json.loads(_line(sub, "{"))
-            result.update(json.loads(_line(pub, "{")))
-        finally:
-            _stop(pub)
-    finally:
-        _stop(sub)
-    return result
+    return _harness.run_pair([python, str(PEER), impl, "sub", str(FLOOD)],
+                             [python, str(PEER), impl, "pub", str(PINGS), str(FLOOD)], env, ERRORS)
 
 
 def main() -> int:

@@ -15,17 +15,11 @@ Run: python benchmarks/bench_ros1.py [--quick]   (needs Debian's ROS 1: roscore,
 
 from __future__ import annotations
 
-import json
-import os
-import signal
-import socket
-import subprocess
 import sys
-import tempfile
-import time
-import xmlrpc.client
 from pathlib import Path
 from typing import Any
+
+import _harness
 
 QUICK = "--quick" in sys.argv
 PINGS = 300 if QUICK else 1_000
@@ -34,79 +28,16 @@ PEER = Path(__file__).resolve().with_name("ros1_peer.py")
 PYTHONS = {"rospy": "/usr/bin/python3", "robotmodel": sys.executable}
 
 
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return int(s.getsockname()[1])
-
-
-def _start(argv: list[str], env: dict[str, str]) -> subprocess.Popen[str]:
-    return subprocess.Popen(argv, env=env, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
-                            text=True, start_new_session=True)
-
-
-def _stop(proc: subprocess.Popen[Any]) -> None:
-    if proc.poll() is None:
-        os.killpg(proc.pid, signal.SIGKILL)
-    proc.wait(10)
-
-
-def _line(proc: subprocess.Popen[str], prefix: str) -> str:
-    assert proc.stdout is not None
-    for line in proc.stdout:
-        if line.startswith(prefix):
-            return line
-    raise RuntimeError(f"{proc.args!r} ended without printing {prefix!r}")
-
-
-def _master_up(uri: str) -> bool:
-    try:
-        answer: Any = xmlrpc.client.ServerProxy(uri).getSystemState("/bench")
-    except OSError:
-        return False
-    code, _, (_, subs, _) = answer
-    return bool(code == 1 and any(topic == "/rosout" for topic, _ in subs))
-
-
 def run_pair(impl: str, env: dict[str, str]) -> dict[str, Any]:
     """One subscriber and one publisher of ``impl``; their merged result lines."""
     python = PYTHONS[impl]
-    sub = _start([python, str(PEER), impl, "sub", str(FLOOD)], env)
-    try:
-        _line(sub, "ready")
-        pub = _start([python, str(PEER), impl, "pub", str(PINGS), str(FLOOD)], env)
-        try:
-            result: dict[str, Any] = json.loads(_line(sub, "{"))
-            result.update(json.loads(_line(pub, "{")))
-        finally:
-            _stop(pub)
-    finally:
-        _stop(sub)
-    return result
+    return _harness.run_pair([python, str(PEER), impl, "sub", str(FLOOD)],
+                             [python, str(PEER), impl, "pub", str(PINGS), str(FLOOD)], env)
 
 
 def main() -> int:
-    port = _free_port()
-    uri = f"http://127.0.0.1:{port}"
-    with tempfile.TemporaryDirectory() as home:
-        env = dict(os.environ, ROS_MASTER_URI=uri, ROS_HOSTNAME="127.0.0.1", ROS_HOME=home, PYTHONUNBUFFERED="1")
-        env.pop("ROS_IP", None)
-        core = subprocess.Popen(["roscore", "-p", str(port)], env=env, stdout=subprocess.DEVNULL,
-                                stderr=subprocess.DEVNULL, start_new_session=True)
-        try:
-            deadline = time.monotonic() + 60
-            while not _master_up(uri):
-                if time.monotonic() > deadline:
-                    raise RuntimeError("roscore did not come up")
-                time.sleep(0.2)
-            results = {impl: run_pair(impl, env) for impl in ("rospy", "robotmodel")}
-        finally:
-            os.killpg(core.pid, signal.SIGINT)
-            try:
-                core.wait(15)
-            except subprocess.TimeoutExpired:
-                os.killpg(core.pid, signal.SIGKILL)
-                core.wait()
+    with _harness.private_roscore() as env:
+        results = {impl: run_pair(impl, env) for impl in ("rospy", "robotmodel")}
     ours, theirs = results["robotmodel"], results["rospy"]
     print(f"{FLOOD} flood messages, {PINGS} pings, one-transform TFMessage")
     print(f"{'':28}{'robotmodel':>14}{'rospy':>14}{'ratio':>10}")

@@ -27,6 +27,8 @@ import xmlrpc.client
 from pathlib import Path
 from typing import Any
 
+import _harness
+
 QUICK = "--quick" in sys.argv
 N = 500 if QUICK else 3_000
 ROBOTS = Path(sysconfig.get_paths()["purelib"]) / "cmeel.prefix" / "share" / "example-robot-data" / "robots"
@@ -111,36 +113,16 @@ def run(impl: str, urdf: Path, env: dict[str, str], uri: str) -> float:
 
 
 def main() -> int:
-    from bench_ros1 import _free_port, _master_up
-
-    port = _free_port()
-    uri = f"http://127.0.0.1:{port}"
-    with tempfile.TemporaryDirectory() as home:
-        env = dict(os.environ, ROS_MASTER_URI=uri, ROS_HOSTNAME="127.0.0.1", ROS_HOME=home, PYTHONUNBUFFERED="1")
-        env.pop("ROS_IP", None)
+    with _harness.private_roscore() as env:
         os.environ.update({k: env[k] for k in ("ROS_MASTER_URI", "ROS_HOSTNAME", "ROS_HOME")})
-        core = subprocess.Popen(["roscore", "-p", str(port)], env=env, stdout=subprocess.DEVNULL,
-                                stderr=subprocess.DEVNULL, start_new_session=True)
-        try:
-            deadline = time.monotonic() + 60
-            while not _master_up(uri):
-                if time.monotonic() > deadline:
-                    raise RuntimeError("roscore did not come up")
-                time.sleep(0.2)
-            print(f"robot_state_publisher CPU per joint_states message ({N:,} messages at ~1 kHz, process "
-                  "utime+stime; the machine is shared with other jobs: CPU time, not wall clock)")
-            for name, urdf in (("panda", PANDA), ("talos", TALOS)):
-                theirs = run("c++", urdf, env, uri)
-                ours = run("robotmodel", urdf, env, uri)
-                print(f"{name:6} C++ {theirs * 1e6:7.1f} us  robotmodel {ours * 1e6:7.1f} us  "
-                      f"ratio {ours / theirs:5.2f}x (goal <= 1.0x)")
-        finally:
-            os.killpg(core.pid, signal.SIGINT)
-            try:
-                core.wait(15)
-            except subprocess.TimeoutExpired:
-                os.killpg(core.pid, signal.SIGKILL)
-                core.wait()
+        uri = env["ROS_MASTER_URI"]
+        print(f"robot_state_publisher CPU per joint_states message ({N:,} messages at ~1 kHz, process "
+              "utime+stime; the machine is shared with other jobs: CPU time, not wall clock)")
+        for name, urdf in (("panda", PANDA), ("talos", TALOS)):
+            theirs = run("c++", urdf, env, uri)
+            ours = run("robotmodel", urdf, env, uri)
+            print(f"{name:6} C++ {theirs * 1e6:7.1f} us  robotmodel {ours * 1e6:7.1f} us  "
+                  f"ratio {ours / theirs:5.2f}x (goal <= 1.0x)")
     print(f"load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} CPUs")
     return 0
 

@@ -22,10 +22,11 @@ import os
 import signal
 import subprocess
 import sys
-import tempfile
 import time
 from pathlib import Path
 from typing import Any
+
+import _harness
 
 QUICK = "--quick" in sys.argv
 MESSAGES = 2_000 if QUICK else 10_000
@@ -119,32 +120,11 @@ def flood(env: dict[str, str], impl: str) -> dict[str, Any]:
 
 
 def main() -> int:
-    from bench_ros1 import _free_port, _master_up
-
-    port = _free_port()
-    uri = f"http://127.0.0.1:{port}"
-    with tempfile.TemporaryDirectory() as home:
-        env = dict(os.environ, ROS_MASTER_URI=uri, ROS_HOSTNAME="127.0.0.1", ROS_HOME=home, PYTHONUNBUFFERED="1")
-        env.pop("ROS_IP", None)
+    with _harness.private_roscore() as env:
         os.environ.update({k: env[k] for k in ("ROS_MASTER_URI", "ROS_HOSTNAME", "ROS_HOME")})
-        core = subprocess.Popen(["roscore", "-p", str(port)], env=env, stdout=subprocess.DEVNULL,
-                                stderr=subprocess.DEVNULL, start_new_session=True)
-        try:
-            deadline = time.monotonic() + 60
-            while not _master_up(uri):
-                if time.monotonic() > deadline:
-                    raise RuntimeError("roscore did not come up")
-                time.sleep(0.2)
-            runs: dict[str, list[dict[str, Any]]] = {"rospy": [], "robotmodel": []}
-            for impl in ("rospy", "robotmodel", "rospy", "robotmodel"):
-                runs[impl].append(flood(env, impl))
-        finally:
-            os.killpg(core.pid, signal.SIGINT)
-            try:
-                core.wait(15)
-            except subprocess.TimeoutExpired:
-                os.killpg(core.pid, signal.SIGKILL)
-                core.wait()
+        runs: dict[str, list[dict[str, Any]]] = {"rospy": [], "robotmodel": []}
+        for impl in ("rospy", "robotmodel", "rospy", "robotmodel"):
+            runs[impl].append(flood(env, impl))
     total = MESSAGES * PER_MESSAGE
     print(f"/tf flood on one ROS 1 master: {MESSAGES:,} TFMessages of {PER_MESSAGE} transforms; listener process "
           "CPU time (the machine is shared with other jobs: CPU time, not wall clock); two runs each, alternating")
