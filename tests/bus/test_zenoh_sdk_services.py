@@ -58,6 +58,10 @@ def test_an_rmw_zenoh_parameter_client_reads_and_sets_robot_state_publisher(zeno
     # robot_state_publisher's parameters (ROS 2 Jazzy's RSP declares these; use_sim_time every node has).
     assert answers[0] == ("list", ["frame_prefix", "ignore_timestamp", "publish_frequency", "robot_description",
                                    "use_sim_time"])
+    # The reply names its request as rmw_zenoh's server does: the request's sequence number and the
+    # client's GID (rmw_service_data.cpp, send_response), and a fresh source time.
+    assert answers.pop(1) == ("reply_attachment", {"sequence_number": 41, "sent": 41, "gid_is_the_client's": True,
+                                                   "stamped_after_the_request": True})
     assert answers[1] == ("get", [{"type": PARAMETER_STRING, "string": first.read_text(), "double": 0.0},
                                   {"type": PARAMETER_DOUBLE, "string": "", "double": 7.5}])
     # robot_description takes the second file; publish_frequency refuses a string as rclcpp does.
@@ -74,7 +78,7 @@ def test_a_robotmodel_client_calls_an_rmw_zenoh_server(zenoh_bus: Bus) -> None:
     from robotmodel.bus import Context, Node
     from robotmodel.msgs._dynamic import service_class
 
-    AddTwoInts = service_class("example_interfaces/srv/AddTwoInts")  # noqa: N806 (a class)
+    AddTwoInts = service_class("example_interfaces/srv/AddTwoInts")
 
     ctx = Context(backend="zenoh", domain_id=int(zenoh_bus.env["ROS_DOMAIN_ID"]))
     try:

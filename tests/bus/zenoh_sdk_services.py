@@ -8,7 +8,8 @@ without comments): none of robotmodel's code is imported here. Roles:
 - ``param_client PORT NODE URDF``: the parameter client of node NODE. Calls ``NODE/list_parameters``,
   ``NODE/get_parameters`` [robot_description, publish_frequency], ``NODE/set_parameters``
   (robot_description := the text of file URDF; publish_frequency := "fast", a wrong type), then
-  get_parameters again; prints one JSON line per answer (``list``, ``get``, ``set``, ``get``),
+  get_parameters again; prints one JSON line per answer (``list``, ``reply_attachment``: what the
+  attachment of one more list reply holds, ``get``, ``set``, ``get``),
   ``timeout NAME`` for a call not answered.
 - ``add_server PORT``: serves ``/add_two_ints`` (example_interfaces/srv/AddTwoInts, sum = a + b) as
   node ``sdk_adder``, prints ``ready``, then ``served A B`` per request, until stdin closes.
@@ -19,10 +20,14 @@ from __future__ import annotations
 import json
 import sys
 import tempfile
+import threading
+import time
 from pathlib import Path
 from typing import Any
 
+import zenoh
 from zenoh_ros2_sdk import ROS2ServiceClient, ROS2ServiceServer, get_registry
+from zenoh_ros2_sdk.attachment import Attachment
 
 # Jazzy's texts (rcl_interfaces, example_interfaces), comments left out and the package named in each
 # field type (ROS allows both; the SDK's parser looks for a bare name under pkg/srv/msg/).
@@ -88,6 +93,7 @@ def param_client(port: int, node: str, urdf: str) -> None:
 
     listing = call(lister, "list", prefixes=[], depth=0)
     say("list", json.dumps(sorted(listing.result.names)))
+    say("reply_attachment", json.dumps(reply_attachment(lister)))
     names = ["robot_description", "publish_frequency"]
     say("get", json.dumps([value_json(v) for v in call(getter, "get", names=names).values]))
     sets = [param_cls(name="robot_description", value=blank(type=STRING, string_value=urdf)),
@@ -95,6 +101,35 @@ def param_client(port: int, node: str, urdf: str) -> None:
     results = call(setter, "set", parameters=sets).results
     say("set", json.dumps([[bool(r.successful), str(r.reason)] for r in results]))
     say("get", json.dumps([value_json(v) for v in call(getter, "get", names=names).values]))
+
+
+def reply_attachment(client: ROS2ServiceClient) -> dict[str, Any]:
+    """One more list request through the SDK's own querier, to read the reply's attachment.
+
+    rmw_zenoh's client takes a reply only with an attachment and pairs it with its request by
+    the sequence number read there (rmw_client_data.cpp, take_response); the SDK's ``call``
+    does not look at it, so it is read here with the SDK's own attachment code.
+    """
+    seq, sent = 41, time.time_ns()
+    request = client.request_msg_class(prefixes=[], depth=0)
+    payload = bytes(client.session_mgr.store.serialize_cdr(request, client.request_store_type))
+    replies: list[Any] = []
+    done = threading.Event()
+
+    def on_reply(reply: Any) -> None:
+        if reply.ok is not None:
+            att = reply.ok.attachment
+            replies.append(None if att is None else Attachment.from_bytes(att.to_bytes()))
+            done.set()
+
+    client.querier.get(on_reply, payload=zenoh.ZBytes(payload),
+                       attachment=zenoh.ZBytes(Attachment(sequence_id=seq, timestamp_ns=sent,
+                                                          gid=client.client_gid).to_bytes()))
+    if not done.wait(TIMEOUT_S) or replies[0] is None:
+        return {"attachment": None}
+    att = replies[0]
+    return {"sequence_number": att.sequence_id, "sent": seq, "gid_is_the_client's": att.gid == client.client_gid,
+            "stamped_after_the_request": att.timestamp_ns >= sent}
 
 
 def add_server(port: int) -> None:
