@@ -25,6 +25,7 @@ import time
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 import zenoh
 from zenoh_ros2_sdk import ROS2ServiceClient, ROS2ServiceServer, get_registry
 from zenoh_ros2_sdk.attachment import Attachment
@@ -83,8 +84,6 @@ def param_client(port: int, node: str, urdf: str) -> None:
                                   "string_value": "", "byte_array_value": [], "bool_array_value": [],
                                   "integer_array_value": [], "double_array_value": [], "string_array_value": []}
         fields.update(over)
-        import numpy as np
-
         for key in ("byte_array_value", "integer_array_value", "double_array_value"):
             fields[key] = np.array(fields[key], dtype={"byte_array_value": np.uint8, "integer_array_value": np.int64,
                                                        "double_array_value": np.float64}[key])
