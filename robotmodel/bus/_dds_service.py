@@ -12,11 +12,16 @@ every reply). The client id is made from its request writer's GUID.
 rmw_fastrtps_cpp carries the request id out of band instead (the RTPS inline QoS
 ``PID_RELATED_SAMPLE_IDENTITY``) and writes the bare message, which Cyclone 11.0.1 can
 neither write nor show to a reader: as between rmw_cyclonedds_cpp and rmw_fastrtps_cpp
-(ros2/rmw_cyclonedds#184), a Fast DDS client gets no reply from this wire (it drops a
-reply that names no request). A service here still takes Fast DDS's requests (a second
-reader of the bare type keeps the samples of writers whose GUID's vendor id is not
-Cyclone's, 01.10; the request id is the writer's GUID and its count of requests), so a
-Fast DDS ``ros2 param set`` takes effect although the client waits in vain for its answer.
+(ros2/rmw_cyclonedds#184), a Fast DDS client gets no reply from this wire. Its client
+listener (rmw_fastrtps_shared_cpp's ``custom_client_info.hpp``) keeps a reply only when
+``SampleInfo.related_sample_identity`` names its own request writer or reply reader, and
+Fast DDS fills that from the DATA submessage's inline QoS alone (PID 0x800f, or the DDS-RPC
+0x0083), never from the payload; libddsc 11.0.1 exports no call that puts a parameter in a
+sample's inline QoS, so no form of the reply written here can reach it. A service here
+still takes Fast DDS's requests (a second reader of the bare type keeps the samples of
+writers whose GUID's vendor id is not Cyclone's, 01.10; the request id is the writer's
+GUID and its count of requests), so a Fast DDS ``ros2 param set`` takes effect although
+the client waits in vain for its answer.
 A client here cannot call a Fast DDS service.
 
 Only the DDS wire uses this module (it is below the backend seam).

@@ -47,7 +47,9 @@ __all__ = ["ZenohClient", "ZenohService"]
 log = logging.getLogger("robotmodel.bus")
 #: rmw_qos_profile_services_default (reliable, volatile, keep last 10), as the tokens carry it.
 SERVICES_QOS = QoS(10)
-# rmw_zenoh's clients wait for replies as long as it takes; a lost server must not leak queries for ever.
+# rmw_zenoh's clients waited for replies as long as it took (ros2/rmw_zenoh#133); since #685 only
+# ``**/_action/get_result/**`` does, other services end at the session's queries_default_timeout (60 s).
+# Here one long bound for all: a lost server must not leak queries for ever.
 _QUERY_TIMEOUT_S = 3600.0
 
 
