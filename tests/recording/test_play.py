@@ -1,0 +1,136 @@
+"""``robotmodel bag play``: every format onto the bus with its types, latching, topic selection and offset;
+``--clock`` driving a tf2_echo with ROS 2's ``use_sim_time`` that prints what ``tf2_echo --bag --time`` says."""
+
+from __future__ import annotations
+
+import math
+import re
+import threading
+from pathlib import Path
+from typing import Any
+
+import pytest
+from livebus import Bus
+from recording.bagfiles import NS, Msg, write
+
+from robotmodel.bus import QOS_TF_STATIC_LISTENER, Node
+from robotmodel.cli.main import main
+from robotmodel.msgs import typestore
+from robotmodel.recording import Player, PlayOptions, Recording
+
+T0 = 1_700_000_000 * NS
+STEPS = 121  # /tf at 20 Hz over 6 s of recording
+
+
+def drive() -> list[Msg]:
+    """A robot driving in odom (x = 0.05 k, yaw = 0.01 k) with a laser fixed on it, as /tf and /tf_static."""
+    msgs = [Msg("/tf_static", T0, "tf", [("base_link", "laser", T0, (0.2, 0.0, 0.3, 0.0, 0.0, 0.0, 1.0))])]
+    for k in range(STEPS):
+        t, yaw = T0 + k * NS // 20, 0.01 * k
+        msgs.append(Msg("/tf", t, "tf", [("odom", "base_link", t,
+                                          (0.05 * k, 0.0, 0.0, 0.0, 0.0, math.sin(yaw / 2), math.cos(yaw / 2)))]))
+    return msgs
+
+
+def play_inprocess(path: Path, options: PlayOptions, domain: int) -> dict[str, list[Any]]:
+    """Play ``path`` on the in-process wire; what a subscriber there got, decoded, by topic (+ late /tf_static)."""
+    got: dict[str, list[Any]] = {"/tf": [], "/tf_static": [], "/clock": [], "late /tf_static": []}
+    store = typestore()
+
+    def keep(key: str) -> Any:
+        return lambda m: got[key].append(store.deserialize_cdr(m.payload, m.typename))
+
+    with Node("sub", backend="inprocess", domain_id=domain) as node, Recording(path) as rec:
+        node.create_subscription("tf2_msgs/msg/TFMessage", "/tf", keep("/tf"), 100, raw=True)
+        node.create_subscription("tf2_msgs/msg/TFMessage", "/tf_static", keep("/tf_static"), QOS_TF_STATIC_LISTENER,
+                                 raw=True)
+        node.create_subscription("rosgraph_msgs/msg/Clock", "/clock", keep("/clock"), 10, raw=True)
+        Player(rec, node, options).play(threading.Event())
+        # A subscriber after the end still gets the latched /tf_static, as from tf2's static broadcaster.
+        node.create_subscription("tf2_msgs/msg/TFMessage", "/tf_static", keep("late /tf_static"),
+                                 QOS_TF_STATIC_LISTENER, raw=True)
+    return got
+
+
+@pytest.mark.parametrize("fmt", ["ros1", "db3_folder", "mcap_folder", "mcap"])
+def test_every_format_plays_types_latching_selection_and_offset(tmp_path: Path, fmt: str) -> None:
+    path = write(tmp_path / "drive", fmt, drive())
+    got = play_inprocess(path, PlayOptions(rate=20.0, start_offset_ns=3 * NS, clock_hz=50.0), 150)
+    # --start-offset 3 s: /tf from k = 60 on, as written; the /tf_static at t0 is before it and not played.
+    xs = [m.transforms[0].transform.translation.x for m in got["/tf"]]
+    assert xs == pytest.approx([0.05 * k for k in range(60, STEPS)])
+    assert got["/tf_static"] == [] and got["late /tf_static"] == []
+    clocks = [m.clock.sec * NS + m.clock.nanosec for m in got["/clock"]]
+    assert clocks and clocks == sorted(clocks) and T0 + 3 * NS <= clocks[0] and clocks[-1] <= T0 + 6 * NS
+
+    got = play_inprocess(path, PlayOptions(rate=50.0, topics=("/tf_static",)), 151)
+    assert got["/tf"] == [] and got["/clock"] == []
+    (late,) = got["late /tf_static"]
+    assert late.transforms[0].child_frame_id == "laser" and late.transforms[0].transform.translation.z == 0.3
+
+
+def test_loop_plays_again(tmp_path: Path) -> None:
+    path = write(tmp_path / "drive", "mcap", drive()[:5])
+    stop = threading.Event()
+    seen: list[float] = []
+
+    def on_tf(m: Any) -> None:
+        seen.append(m.transforms[0].transform.translation.x)
+        if len(seen) >= 9:
+            stop.set()
+
+    with Node("sub", backend="inprocess", domain_id=152) as node, Recording(path) as rec:
+        node.create_subscription("tf2_msgs/msg/TFMessage", "/tf", on_tf, 100)
+        Player(rec, node, PlayOptions(rate=10.0, loop=True, topics=("/tf",))).play(stop)
+    assert seen[:9] == pytest.approx([0.0, 0.05, 0.1, 0.15] * 2 + [0.0])
+
+
+@pytest.mark.parametrize(("words", "needle"), [
+    (["nothere.mcap"], "nothere.mcap: cannot read"),
+    (["DRIVE", "--topics", "/odom"], "no topic /odom in the recording (it has /tf, /tf_static)"),
+    (["DRIVE", "-r", "0"], "rate must be a positive number"),
+])
+def test_bad_input_is_one_line(tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch,
+                               words: list[str], needle: str) -> None:
+    monkeypatch.chdir(tmp_path)
+    path = write(tmp_path / "drive", "mcap", drive()[:3])
+    code = main(["bag", "play", *[str(path) if w == "DRIVE" else w for w in words]])
+    err = capsys.readouterr().err
+    assert code != 0 and needle in err and len(err.strip().splitlines()) == 1, err
+
+
+def echo_blocks(lines: list[str]) -> list[tuple[int, list[str]]]:
+    """tf2_echo's printouts: (stamp ns, the lines after 'At time')."""
+    out: list[tuple[int, list[str]]] = []
+    for i, line in enumerate(lines):
+        m = re.fullmatch(r"At time (\d+)\.(\d+)", line)
+        if m and i + 8 < len(lines):
+            # tf2_echo prints sec.nanosec with the nanoseconds unpadded, as ROS does.
+            out.append((int(m[1]) * NS + int(m[2]), lines[i + 1:i + 9]))
+    return out
+
+
+def test_play_clock_drives_sim_time_tf2_echo_as_bag_echo_says(tmp_path: Path,
+                                                                capsys: pytest.CaptureFixture[str]) -> None:
+    path = write(tmp_path / "drive", "mcap", drive())
+    bus = Bus(tmp_path, "dds")
+    try:
+        echo = bus.robotmodel("tf2_echo", "odom", "laser", "--ros-args", "-p", "use_sim_time:=true")
+        echo.wait_line("Waiting for transform", stream="err")
+        play = bus.robotmodel("bag", "play", str(path), "--clock", "100", "-r", "2")
+        play.wait_line("Playback finished", timeout=60, stream="err")
+        assert play.popen.wait(30) == 0  # it ends by itself at the recording's end
+        echo.stop()
+    finally:
+        bus.reap()
+    assert not [line for line in echo.err if "use_sim_time" in line]  # used, not 'ignored here'
+    blocks = echo_blocks(echo.out)
+    assert len(blocks) >= 3, echo.out
+    # tf2_echo sleeps 1 s of ROS time: with sim time at rate 2 its printouts are ~1 s of recording apart
+    # (a wall-clock tf2_echo would print them ~2 s apart).
+    gaps = [(b[0] - a[0]) / NS for a, b in zip(blocks[1:], blocks[2:], strict=False)]
+    assert gaps and all(0.8 <= g <= 1.25 for g in gaps), gaps
+    for stamp, live in blocks:
+        t = f"{stamp // NS}.{stamp % NS:09d}"
+        assert main(["tf2_echo", "odom", "laser", "--bag", str(path), "--time", t, "--no-progress"]) == 0
+        assert echo_blocks(capsys.readouterr().out.splitlines()) == [(stamp, live)]
