@@ -9,13 +9,21 @@ is ``robotmodel record`` (:func:`robotmodel.recording.run_record`); ``bag play``
 from __future__ import annotations
 
 import argparse
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from robotmodel.cli.record_cmd import add_record_arguments
 
-__all__ = ["register"]
+if TYPE_CHECKING:
+    from robotmodel.recording import PlayOptions
 
-_DEFAULT = "default"  # --clock without HZ (argparse leaves a const unconverted)
+__all__ = ["play_options", "register"]
+
+_DEFAULT = "default"  # --clock without HZ
+
+
+def _hz(text: str) -> float | str:
+    """--clock's HZ as a float; the no-value marker as it is (argparse passes a string const through type)."""
+    return text if text == _DEFAULT else float(text)
 
 
 def register(sub: Any) -> None:
@@ -42,7 +50,7 @@ def register(sub: Any) -> None:
                                         "transient local), optionally with /clock for nodes with use_sim_time; "
                                         "rosbag play's spellings (--hz, -s/--start) are accepted too.")
     play.add_argument("bag_path", metavar="FILE", help="the recording (a .bag or .mcap/.db3 file, or a bag folder)")
-    play.add_argument("--clock", nargs="?", type=float, const=_DEFAULT, default=None, metavar="HZ",
+    play.add_argument("--clock", nargs="?", type=_hz, const=_DEFAULT, default=None, metavar="HZ",
                       help="publish /clock at HZ (default: rosbag2's 40) with the recording's time")
     play.add_argument("--hz", type=float, default=None, help=argparse.SUPPRESS)  # rosbag play --clock --hz=N
     play.add_argument("-r", "--rate", type=float, default=1.0, help="rate at which to play back (default 1.0)")
@@ -56,15 +64,21 @@ def register(sub: Any) -> None:
     play.set_defaults(func=_play)
 
 
-def _play(args: argparse.Namespace) -> int:
-    from robotmodel.recording import DEFAULT_CLOCK_HZ, PlayOptions, parse_topics, run_bag_play
+def play_options(args: argparse.Namespace) -> PlayOptions:
+    """The :class:`robotmodel.recording.PlayOptions` that ``bag play``'s words say."""
+    from robotmodel.recording import DEFAULT_CLOCK_HZ, PlayOptions, parse_topics
 
     clock = DEFAULT_CLOCK_HZ if args.clock == _DEFAULT else args.clock
     if args.hz is not None and clock is not None:
         clock = args.hz
-    options = PlayOptions(rate=args.rate, loop=args.loop, start_offset_ns=round(args.start_offset * 1e9),
-                          topics=parse_topics(args.topics), clock_hz=clock)
-    return run_bag_play(args.bag_path, options, connect=args.connect)
+    return PlayOptions(rate=args.rate, loop=args.loop, start_offset_ns=round(args.start_offset * 1e9),
+                       topics=parse_topics(args.topics), clock_hz=clock)
+
+
+def _play(args: argparse.Namespace) -> int:
+    from robotmodel.recording import run_bag_play
+
+    return run_bag_play(args.bag_path, play_options(args), connect=args.connect)
 
 
 def _info(args: argparse.Namespace) -> int:

@@ -6,6 +6,7 @@ from __future__ import annotations
 import itertools
 import math
 import re
+import sys
 import threading
 from pathlib import Path
 from typing import Any
@@ -135,3 +136,52 @@ def test_play_clock_drives_sim_time_tf2_echo_as_bag_echo_says(tmp_path: Path,
         t = f"{stamp // NS}.{stamp % NS:09d}"
         assert main(["tf2_echo", "odom", "laser", "--bag", str(path), "--time", t, "--no-progress"]) == 0
         assert echo_blocks(capsys.readouterr().out.splitlines()) == [(stamp, live)]
+
+
+ECHO_PY = Path("/usr/lib/tf2_tools/echo.py")
+
+
+def test_play_clock_on_ros1_drives_the_real_echo_py_in_sim_time(tmp_path: Path, ros1: Any,
+                                                                capsys: pytest.CaptureFixture[str]) -> None:
+    from ros1helpers import SYSTEM_PYTHON, wait_until
+
+    if not ECHO_PY.exists():
+        pytest.skip(f"{ECHO_PY} is absent")
+    path = write(tmp_path / "drive", "mcap", drive())  # CDR, played as ROS 1 on this wire
+    ros1.node("setter").params.set_param("/use_sim_time", True)
+    echo = ros1.start(SYSTEM_PYTHON, str(ECHO_PY), "odom", "laser", "-p", "6")
+    wait_until(lambda: any(topic == "/clock" for topic, _ in ros1.master.get_system_state()[1]), 60,
+               "echo.py's /clock subscription")
+    ros1.env["ROS_VERSION"] = "1"
+    play = ros1.start(sys.executable, "-m", "robotmodel.cli.main", "bag", "play", str(path), "--clock", "-r", "2")
+    play.wait_line("Playback finished", 60)
+    printed = [(m[1], float(m[2])) for line in echo.lines
+               if (m := re.match(r"At time (\S+), \(current time (\S+)\)", line))]
+    assert len(printed) >= 3, echo.lines[-20:]
+    # rospy's time is /clock's: inside the recording (2023), not the wall clock's now
+    assert all(T0 / NS <= now <= T0 / NS + 6.1 for _, now in printed), printed
+    stamp = printed[-2][0]  # as echo.py prints it: to_sec()'s shortest repr, exact in decimal
+    i = next(i for i, line in enumerate(echo.lines) if line.startswith(f"At time {stamp},"))
+    live = [float(v) for v in re.findall(r"-?\d+\.\d+", echo.lines[i + 1] + echo.lines[i + 2])]
+    assert main(["tf2_echo", "odom", "laser", "--bag", str(path), "--time", stamp, "--no-progress"]) == 0
+    (block,) = echo_blocks(capsys.readouterr().out.splitlines())
+    sec, _, frac = stamp.partition(".")
+    assert block[0] == int(sec) * NS + int(frac.ljust(9, "0"))
+    from_bag = [float(v) for v in re.findall(r"-?\d+\.\d+", block[1][0] + block[1][1])]
+    assert live == pytest.approx(from_bag, abs=6e-4)  # tf2_echo prints 3 decimals, echo.py 6
+
+
+@pytest.mark.parametrize(("words", "clock", "rate", "offset_ns", "topics", "loop"), [
+    ([], None, 1.0, 0, (), False),
+    (["--clock"], 40.0, 1.0, 0, (), False),  # rosbag2's default
+    (["--clock", "100", "-r", "0.5", "--start-offset", "1.25", "-l"], 100.0, 0.5, 1_250_000_000, (), True),
+    (["--clock", "--hz=200", "-s", "2", "--loop"], 200.0, 1.0, 2 * NS, (), True),  # rosbag play's spellings
+    (["--rate", "3", "--topics", "/tf", "tf_static"], None, 3.0, 0, ("/tf", "/tf_static"), False),
+])
+def test_play_words(words: list[str], clock: float | None, rate: float, offset_ns: int, topics: tuple[str, ...],
+                    loop: bool) -> None:
+    from robotmodel.cli.bag_cmd import play_options
+    from robotmodel.cli.main import build_parser
+
+    options = play_options(build_parser().parse_args(["bag", "play", "F", *words]))
+    assert options == PlayOptions(rate=rate, loop=loop, start_offset_ns=offset_ns, topics=topics, clock_hz=clock)
