@@ -112,10 +112,11 @@ def echo_blocks(lines: list[str]) -> list[tuple[int, list[str]]]:
     return out
 
 
-def test_play_clock_drives_sim_time_tf2_echo_as_bag_echo_says(tmp_path: Path,
-                                                                capsys: pytest.CaptureFixture[str]) -> None:
+@pytest.mark.parametrize("wire", ["dds", "zenoh"])
+def test_play_clock_drives_sim_time_tf2_echo_as_bag_echo_says(tmp_path: Path, capsys: pytest.CaptureFixture[str],
+                                                                wire: str) -> None:
     path = write(tmp_path / "drive", "mcap", drive())
-    bus = Bus(tmp_path, "dds")
+    bus = Bus(tmp_path, wire)
     try:
         echo = bus.robotmodel("tf2_echo", "odom", "laser", "--ros-args", "-p", "use_sim_time:=true")
         echo.wait_line("Waiting for transform", stream="err")
