@@ -186,3 +186,34 @@ def test_play_words(words: list[str], clock: float | None, rate: float, offset_n
 
     options = play_options(build_parser().parse_args(["bag", "play", "F", *words]))
     assert options == PlayOptions(rate=rate, loop=loop, start_offset_ns=offset_ns, topics=topics, clock_hz=clock)
+
+
+def test_view_tf_replays_the_drive(tmp_path: Path) -> None:
+    """``view --tf`` draws the played drive: base_footprint in odom at recorded poses, moving as recorded."""
+    from viewerws import viewer_state
+
+    diffbot = Path(__file__).resolve().parents[2] / "urdf" / "diffbot.urdf.xacro"
+    msgs = [Msg(m.topic, m.log_ns, m.kind, [(p, "base_footprint", t, pose) for p, _c, t, pose in m.value])
+            for m in drive() if m.topic == "/tf"]
+    path = write(tmp_path / "drive", "mcap", msgs)
+    bus = Bus(tmp_path, "zenoh")
+
+    def step(frames: dict[str, Any]) -> int | None:
+        """The drive's step k whose pose base_footprint is drawn at (None: not drawn, or not a recorded pose)."""
+        m = frames.get("base_footprint")
+        if m is None:
+            return None
+        k = round(m[0, 3] / 0.05)
+        yaw = 0.01 * k
+        recorded = [[math.cos(yaw), -math.sin(yaw), 0.05 * k], [math.sin(yaw), math.cos(yaw), 0.0]]
+        return k if 0 <= k < STEPS and bool((abs(m[:2, [0, 1, 3]] - recorded) < 1e-5).all()) else None
+
+    try:
+        view = bus.robotmodel("view", str(diffbot), "--tf", "--fixed-frame", "odom", "--port", "0")
+        url = view.wait_line(r"^http://127\.0\.0\.1:\d+/(?= \(|$)", timeout=120).group(0)
+        bus.robotmodel("bag", "play", str(path), "--loop", "-r", "2")
+        first = step(viewer_state(url, lambda s: step(s[1]) is not None)[1])
+        later = step(viewer_state(url, lambda s: step(s[1]) not in (None, first))[1])
+        assert first is not None and later is not None and later != first
+    finally:
+        bus.reap()
