@@ -189,8 +189,13 @@ def test_play_words(words: list[str], clock: float | None, rate: float, offset_n
 
 
 def test_view_tf_replays_the_drive(tmp_path: Path) -> None:
-    """``view --tf`` draws the played drive: base_footprint in odom at recorded poses, moving as recorded."""
+    """``view --tf`` draws the played drive: base_footprint in odom at recorded poses, moving as recorded; a
+    screenshot shows the robot where the drive ends."""
+    from viewerhelpers import HIDE_HELPERS, READY, grey_points, robot_fraction
     from viewerws import viewer_state
+
+    from robotmodel.model import load
+    from robotmodel.viewer import Browser
 
     diffbot = Path(__file__).resolve().parents[2] / "urdf" / "diffbot.urdf.xacro"
     msgs = [Msg(m.topic, m.log_ns, m.kind, [(p, "base_footprint", t, pose) for p, _c, t, pose in m.value])
@@ -209,11 +214,27 @@ def test_view_tf_replays_the_drive(tmp_path: Path) -> None:
         return k if 0 <= k < STEPS and bool((abs(m[:2, [0, 1, 3]] - recorded) < 1e-5).all()) else None
 
     try:
-        view = bus.robotmodel("view", str(diffbot), "--tf", "--fixed-frame", "odom", "--port", "0")
+        view = bus.robotmodel("view", str(diffbot), "--tf", "--fixed-frame", "odom", "--track", "base_footprint",
+                              "--port", "0")
         url = view.wait_line(r"^http://127\.0\.0\.1:\d+/(?= \(|$)", timeout=120).group(0)
-        bus.robotmodel("bag", "play", str(path), "--loop", "-r", "2")
+        looping = bus.robotmodel("bag", "play", str(path), "--loop", "-r", "2")
         first = step(viewer_state(url, lambda s: step(s[1]) is not None)[1])
         later = step(viewer_state(url, lambda s: step(s[1]) not in (None, first))[1])
         assert first is not None and later is not None and later != first
+        looping.kill()
+        # The last second once more, so that the robot stays where the drive ends (k = STEPS - 1) for the screenshot.
+        bus.robotmodel("bag", "play", str(path), "--start-offset", "5.5", "-r", "2").wait_line(
+            "Playback finished", timeout=60, stream="err")
+        with Browser(timeout=60) as browser:
+            browser.navigate(url)
+            browser.wait_for(READY, timeout=60)
+            browser.evaluate(HIDE_HELPERS)
+            browser.wait_for("""(() => { const m = viewer.scene_tree.find(["robot"]).object.matrix;
+                return Math.abs(m.elements[12] - 6.0) < 1e-6; })()""", timeout=30)
+            png = browser.screenshot()
+            (tmp_path / "replay.png").write_bytes(png)  # kept for a look when this fails
+            hits, grey_corners = robot_fraction(browser, png, grey_points(load(diffbot), {}))
     finally:
         bus.reap()
+    # The robot is drawn where the drive ended, in the middle of a tracking camera's view.
+    assert hits >= 0.7 and grey_corners == 0.0, (hits, grey_corners)
