@@ -142,13 +142,14 @@ def test_play_clock_drives_sim_time_tf2_echo_as_bag_echo_says(tmp_path: Path, ca
 ECHO_PY = Path("/usr/lib/tf2_tools/echo.py")
 
 
-def test_play_clock_on_ros1_drives_the_real_echo_py_in_sim_time(tmp_path: Path, ros1: Any,
+@pytest.mark.parametrize("fmt", ["ros1", "mcap"])
+def test_play_clock_on_ros1_drives_the_real_echo_py_in_sim_time(tmp_path: Path, ros1: Any, fmt: str,
                                                                 capsys: pytest.CaptureFixture[str]) -> None:
     from ros1helpers import SYSTEM_PYTHON, wait_until
 
     if not ECHO_PY.exists():
         pytest.skip(f"{ECHO_PY} is absent")
-    path = write(tmp_path / "drive", "mcap", drive())  # CDR, played as ROS 1 on this wire
+    path = write(tmp_path / "drive", fmt, drive())  # a .bag as it is; an MCAP's CDR converted to ROS 1
     ros1.node("setter").params.set_param("/use_sim_time", True)
     echo = ros1.start(SYSTEM_PYTHON, str(ECHO_PY), "odom", "laser", "-p", "6")
     wait_until(lambda: any(topic == "/clock" for topic, _ in ros1.master.get_system_state()[1]), 60,
