@@ -29,7 +29,7 @@ def _hz(text: str) -> float | str:
 def register(sub: Any) -> None:
     """Add the ``bag`` subcommand with its ``info``, ``play`` and ``record`` verbs."""
     parser: argparse.ArgumentParser = sub.add_parser(
-        "bag", help="inspect, play or record a recording (as ros2 bag)",
+        "bag", aliases=["rosbag"], help="inspect, play or record a recording (as ros2 bag)",
         description="Inspect a recording: ROS 1 .bag, ROS 2 bag folder (db3 or MCAP), bare MCAP or db3.")
     verbs = parser.add_subparsers(dest="verb", metavar="VERB")
     verbs.required = True
