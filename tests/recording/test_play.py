@@ -240,3 +240,17 @@ def test_view_tf_replays_the_drive(tmp_path: Path) -> None:
         bus.reap()
     # The robot is drawn where the drive ended, in the middle of a tracking camera's view.
     assert hits >= 0.7 and grey_corners == 0.0, (hits, grey_corners)
+
+
+def test_ctrl_c_ends_a_looping_play(tmp_path: Path) -> None:
+    import signal
+
+    path = write(tmp_path / "drive", "ros1", drive()[:5])
+    bus = Bus(tmp_path, "zenoh")
+    try:
+        play = bus.robotmodel("bag", "play", str(path), "--loop", "--clock")
+        play.wait_line("Playing", timeout=60, stream="err")
+        assert play.stop(signal.SIGINT, timeout=10) == 0
+    finally:
+        bus.reap()
+    assert any("Playback finished" in line for line in play.err), play.err
