@@ -1,9 +1,10 @@
-"""ROS time for a node on the ROS 1 wire: ``/clock`` when the parameter server's ``/use_sim_time`` is true.
+"""ROS time for a node: ``/clock`` when ``use_sim_time`` is true (ROS 1's ``/use_sim_time``, ROS 2's node parameter).
 
 As rospy's ``init_simtime`` and roscpp's ``ros::Time::init`` read it: ``/use_sim_time`` is
 looked at once, when the node starts. True, the node's time is the last
 ``rosgraph_msgs/Clock`` on ``/clock`` (0 until the first one, and it may jump back, as when
-a bag loops); otherwise, and on every other wire, it is the system clock.
+a bag loops); otherwise it is the system clock. On the ROS 2 wires the node's own ``use_sim_time``
+parameter decides, as rclpy's ``TimeSource`` does; the caller passes its value.
 :func:`node_clock` gives the clock; :meth:`TopicClock.wait_for_valid` is roscpp's
 ``ros::Time::waitForValid`` (what lets its timers start only once time runs).
 """
@@ -47,10 +48,15 @@ class TopicClock(SimClock):
         self._sub.close()
 
 
-def node_clock(node: Any) -> Clock:
-    """The clock of ``node``'s ROS time: a :class:`TopicClock` on ROS 1 with ``/use_sim_time`` true, else the system."""
+def node_clock(node: Any, use_sim_time: bool = False) -> Clock:
+    """The clock of ``node``'s ROS time: a :class:`TopicClock` when sim time is on, else the system clock.
+
+    Sim time is on with ``/use_sim_time`` true on ROS 1, and on a ROS 2 wire with the node's
+    ``use_sim_time`` parameter true (passed in, as rclpy's TimeSource reads it from
+    ``--ros-args -p use_sim_time:=true``).
+    """
     if node.context.backend.name != "ros1":
-        return SystemClock()
+        return TopicClock(node) if use_sim_time else SystemClock()
     store = node.parameters
     if not (store.has("/use_sim_time") and store.get("/use_sim_time") is True):
         return SystemClock()

@@ -25,7 +25,7 @@ absolute ones such as ``/tf`` do not, unless a remap rule says so.
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Collection, Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -229,12 +229,12 @@ def node_params(ros: RosArgs, namespace: str, name: str) -> dict[str, Any]:
     return found
 
 
-def warn_ignored_params(ros: RosArgs, namespace: str, name: str) -> None:
-    """For commands with no parameters: one rcutils WARN line per override the node would get."""
+def warn_ignored_params(ros: RosArgs, namespace: str, name: str, used: Collection[str] = ()) -> None:
+    """For commands with no parameters (but ``used``): one rcutils WARN line per other override the node gets."""
     from robotmodel.rcl._console import ros_log
     from robotmodel.rcl._params import warn_unused_params
 
-    warn_unused_params(node_params(ros, namespace, name), lambda _n: False,
+    warn_unused_params(node_params(ros, namespace, name), lambda n: n in used,
                 lambda text: ros_log("WARN", logger_name(namespace, name), text),
                 {"use_sim_time": "there is no /clock here", "qos_overrides": "QoS overrides are not read here"})
 

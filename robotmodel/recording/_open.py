@@ -184,6 +184,15 @@ class Recording:
         """Messages in the whole recording, from its index."""
         return int(self._reader.message_count)
 
+    @property
+    def start_ns(self) -> int:
+        """The first message's log time (the recording's start), from its index."""
+        return int(self._reader.start_time)
+
+    def connections(self, topic: str) -> list[Any]:
+        """The rosbags connections recorded for ``topic`` (their ``ext`` holds the QoS or ROS 1 latching)."""
+        return list(self._connections.get(topic, ()))
+
     def topics(self) -> list[Topic]:
         """Topics with their type and count, by name."""
         out = []

@@ -16,7 +16,7 @@ from collections.abc import Sequence
 from typing import Any
 
 from robotmodel.errors import EchoArgsError, RosArgsError
-from robotmodel.rcl import ros_log, split_ros_words, warn_ignored_params
+from robotmodel.rcl import node_params, ros_log, split_ros_words, warn_ignored_params
 from robotmodel.signals import stop_on_signals
 from robotmodel.tf_ros._echo_args import HELP_MORE, USAGE, failure_text, format_echo, parse_echo_args, waiting_message
 from robotmodel.tf_ros._words import split_bag_words, split_connect
@@ -102,10 +102,13 @@ def run_tf2_echo(words: Sequence[str]) -> int:
     source, target = echo.source_frame, echo.target_frame
     buffer = Buffer()
     # /tf and /tf_static are absolute: the namespace names the node only, as in ROS.
-    warn_ignored_params(ros, namespace, ros.node_name or _NODE)
-    with Node(ros.node_name or _NODE, namespace, connect=endpoints, remappings=ros.remaps) as node, \
+    name = ros.node_name or _NODE
+    warn_ignored_params(ros, namespace, name, used=("use_sim_time",))
+    use_sim_time = node_params(ros, namespace, name).get("use_sim_time") is True
+    with Node(name, namespace, connect=endpoints, remappings=ros.remaps) as node, \
             TransformListener(buffer, node):
-        clock = node_clock(node)  # ROS time: /clock with /use_sim_time on ROS 1, as tf_echo's ros::Rate
+        # ROS time: /clock with use_sim_time (ROS 1's /use_sim_time, ROS 2's parameter), as tf2_echo's rate sleeps
+        clock = node_clock(node, use_sim_time)
         last_log = -1.0
         while not stop.is_set():
             reason = can_transform_reason(buffer, source, target)
