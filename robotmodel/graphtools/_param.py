@@ -78,9 +78,14 @@ def _ros1_key(node_name: str, name: str) -> str:
     return name if name.startswith("/") else node_name.rstrip("/") + "/" + name
 
 
+def _ros1_all(node: Any) -> list[str]:
+    """Every key on the server, absolute (the store names them relative to this node's namespace, '/')."""
+    return sorted(n if n.startswith("/") else "/" + n for n in node.parameters.names())
+
+
 def _ros1_names(node: Any, node_name: str) -> list[str]:
     prefix = node_name.rstrip("/") + "/"
-    return sorted(n[len(prefix):] for n in node.parameters.names() if n.startswith(prefix))
+    return [n[len(prefix):] for n in _ros1_all(node) if n.startswith(prefix)]
 
 
 def run_param_list(node_name: str | None = None, *, connect: Sequence[str] = (), spin_time: float = 0.5) -> int:
@@ -88,7 +93,7 @@ def run_param_list(node_name: str | None = None, *, connect: Sequence[str] = (),
     with _session(connect, spin_time) as node:
         if _is_ros1(node):
             if node_name is None:
-                for name in node.parameters.names():
+                for name in _ros1_all(node):
                     print(name)
                 return 0
             listing = {node_name: _ros1_names(node, node_name)}

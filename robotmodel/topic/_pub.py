@@ -15,6 +15,9 @@ from robotmodel.errors import BusError
 
 __all__ = ["message_from_yaml", "run_topic_pub"]
 
+# rostopic pub -1 latches its message for this long before it exits.
+_ROS1_LATCH_S = 3.0
+
 
 def _kind(desc: Any) -> str:
     return str(getattr(desc[0], "name", desc[0]))
@@ -97,7 +100,12 @@ def run_topic_pub(topic_name: str, message_type: str, values: str = "", *, rate:
         raise BusError(f"rate must be greater than zero, got {rate}")
     stop = stop_on_signals()
     with Node("_robotmodel_topic_pub", connect=list(connect)) as node:
-        pub = node.create_publisher(type(msg), topic_name, 10)
+        qos: Any = 10
+        if count and node.context.encoding == "ros1":
+            from robotmodel.bus import QOS_LATCHED
+
+            qos, keep_alive = QOS_LATCHED, max(keep_alive, _ROS1_LATCH_S)
+        pub = node.create_publisher(type(msg), topic_name, qos)
         if wait:
             print(f"Waiting for at least {wait} matching subscription(s)...", flush=True)
             while not stop.is_set() and not pub.wait_for_subscriptions(wait, 0.1):
