@@ -12,6 +12,9 @@
 
 from __future__ import annotations
 
+from robotmodel.topic._info import run_topic_info, run_topic_type
+from robotmodel.topic._pub import message_from_yaml, run_topic_pub
+from robotmodel.topic._rate import RateStats, rate_stats, run_topic_bw, run_topic_hz
 from robotmodel.topic._tools import (
     DEFAULT_SPIN_TIME,
     DEFAULT_TRUNCATE_LENGTH,
@@ -19,10 +22,6 @@ from robotmodel.topic._tools import (
     run_topic_echo,
     run_topic_list,
 )
-
-from robotmodel.topic._info import run_topic_info, run_topic_type
-from robotmodel.topic._pub import message_from_yaml, run_topic_pub
-from robotmodel.topic._rate import RateStats, rate_stats, run_topic_bw, run_topic_hz
 
 __all__ = ["DEFAULT_SPIN_TIME", "DEFAULT_TRUNCATE_LENGTH", "RateStats", "message_from_yaml", "message_to_yaml",
            "rate_stats", "run_topic_bw", "run_topic_echo", "run_topic_hz", "run_topic_info", "run_topic_list",

@@ -7,11 +7,12 @@ monotonic clock in integer nanoseconds.
 
 from __future__ import annotations
 
+import itertools
 import math
 import threading
-from time import monotonic_ns
 from collections import deque
 from collections.abc import Sequence
+from time import monotonic_ns
 from typing import Any, NamedTuple
 
 __all__ = ["DEFAULT_WINDOW", "RateStats", "rate_stats", "run_topic_bw", "run_topic_hz"]
@@ -40,7 +41,7 @@ def rate_stats(arrivals_ns: Sequence[int]) -> RateStats | None:
     """Stats of arrival times (ns, increasing); None below two arrivals."""
     if len(arrivals_ns) < 2:
         return None
-    deltas = [(b - a) / 1e9 for a, b in zip(arrivals_ns, arrivals_ns[1:], strict=False)]
+    deltas = [(b - a) / 1e9 for a, b in itertools.pairwise(arrivals_ns)]
     mean = sum(deltas) / len(deltas)
     std = math.sqrt(sum((d - mean) ** 2 for d in deltas) / len(deltas))
     return RateStats(1.0 / mean if mean > 0 else 0.0, min(deltas), max(deltas), std, len(deltas) + 1)
