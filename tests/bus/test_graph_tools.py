@@ -14,6 +14,7 @@ from robotmodel.bus import Node
 
 ARM = BUNDLED / "arm.urdf.xacro"
 RATE = re.compile(r"^average rate: ([\d.]+)$")
+BW = re.compile(r"^([\d.]+) B/s from \d+ messages$")
 DEADLINE_S = 40.0
 
 
@@ -36,6 +37,13 @@ def test_param_get_set_dump_on_robot_state_publisher(procs: Any, bus_wire: str) 
     assert dump[:2] == ["/robot_state_publisher:", "  ros__parameters:"]
     assert "    publish_frequency: 50.0" in dump
     assert param("list", "/robot_state_publisher")[0] == "/robot_state_publisher:"
+    info = procs.cli("topic", "info", "/tf_static", "--spin-time", "1")
+    assert info.popen.wait(DEADLINE_S) == 0, info.errors
+    assert info.wait_for(lambda ls: ls == ["Type: tf2_msgs/msg/TFMessage", "Publisher count: 1",
+                                           "Subscription count: 0"], 2), info.lines
+    nodes = procs.cli("node", "list", "--spin-time", "1")
+    assert nodes.popen.wait(DEADLINE_S) == 0, nodes.errors
+    assert nodes.wait_for(lambda ls: "/robot_state_publisher" in ls, 2), nodes.lines
 
 
 def test_topic_hz_within_5_percent_of_a_50_hz_publisher(procs: Any, bus_wire: str) -> None:
@@ -60,12 +68,26 @@ def test_topic_hz_within_5_percent_of_a_50_hz_publisher(procs: Any, bus_wire: st
         thread.start()
         try:
             hz = procs.cli("topic", "hz", "/hz_probe", "--spin-time", "1")
+            bw = procs.cli("rostopic", "bw", "/hz_probe", "--spin-time", "1")
             assert hz.wait_for(lambda ls: sum(bool(RATE.match(ln)) for ln in ls) >= 3, DEADLINE_S), hz.errors
+            assert bw.wait_for(lambda ls: sum(bool(BW.match(ln)) for ln in ls) >= 3, DEADLINE_S), bw.errors
         finally:
             stop.set()
             thread.join(5)
     published = (len(sent) - 1) / ((sent[-1] - sent[0]) / 1e9)
-    rates = [float(m.group(1)) for ln in hz.lines if (m := RATE.match(ln))]
     assert abs(published - 50.0) / 50.0 < 0.05, published
-    assert abs(rates[-1] - 50.0) / 50.0 < 0.05, (rates, published)
-    assert re.match(r"^\tmin: [\d.]+s max: [\d.]+s std dev: [\d.]+s window: \d+$", hz.lines[-1]), hz.lines
+    rate, rate_detail = _last_pair(hz.lines, RATE)
+    assert abs(float(rate.group(1)) - 50.0) / 50.0 < 0.05, (hz.lines, published)
+    assert re.match(r"^\tmin: [\d.]+s max: [\d.]+s std dev: [\d.]+s window: \d+$", rate_detail), hz.lines
+    band, band_detail = _last_pair(bw.lines, BW)
+    # A std_msgs/String "x" in CDR: 4 bytes of encapsulation, a 4-byte length, "x" and its NUL.
+    assert band_detail == "\tMessage size mean: 10.00 B min: 10.00 B max: 10.00 B", bw.lines
+    assert abs(float(band.group(1)) - 500.0) / 500.0 < 0.05, bw.lines
+
+
+def _last_pair(lines: list[str], first: re.Pattern[str]) -> tuple[re.Match[str], str]:
+    """The last report whose two lines have both arrived: the first line's match, the second line."""
+    for i in range(len(lines) - 2, -1, -1):
+        if m := first.match(lines[i]):
+            return m, lines[i + 1]
+    pytest.fail(f"no complete report in {lines}")
