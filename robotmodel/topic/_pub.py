@@ -37,8 +37,24 @@ def _fill(typename: str, values: Any) -> Any:
         if name not in fields:
             raise BusError(f"Failed to populate field: '{typename.rsplit('/', 1)[1]}' object has no attribute "
                            f"'{name}'")
-        setattr(msg, name, _value(fields[name], value, f"{typename}.{name}"))
+        setattr(msg, name, _value(fields[name], value, name))
     return msg
+
+
+def _base(base: str, value: Any, where: str) -> Any:
+    """``value`` for a field of ROS type ``base``, or the error rosidl's setters raise (naming the field)."""
+    if base in ("string", "wstring"):
+        want, ok = "str", isinstance(value, str)
+    elif base == "bool":
+        want, ok = "bool", isinstance(value, bool)
+    elif base.startswith("float"):
+        want, ok = "float", isinstance(value, int | float) and not isinstance(value, bool)
+        value = float(value) if ok else value
+    else:  # the integer types, byte and char
+        want, ok = "int", isinstance(value, int) and not isinstance(value, bool)
+    if not ok:
+        raise BusError(f"Failed to populate field: The '{where}' field must be of type '{want}'")
+    return value
 
 
 def _value(desc: Any, value: Any, where: str) -> Any:
@@ -46,12 +62,9 @@ def _value(desc: Any, value: Any, where: str) -> Any:
     if kind == "NAME":
         return _fill(detail, value)
     if kind == "BASE":
-        base = detail[0]
-        if base in ("float32", "float64") and isinstance(value, int) and not isinstance(value, bool):
-            return float(value)
-        return value
+        return _base(detail[0], value, where)
     if not isinstance(value, list):
-        raise BusError(f"Failed to populate field {where}: expected a sequence, got {value!r}")
+        raise BusError(f"Failed to populate field: The '{where}' field must be a sequence")
     return [_value(detail[0], v, where) for v in value]
 
 
@@ -68,7 +81,10 @@ def message_from_yaml(typename: str, text: str) -> Any:
     try:
         values = yaml.safe_load(text) if text else None
     except yaml.YAMLError as exc:
-        raise BusError(f"The passed value needs to be a dictionary in YAML format: {exc}") from None
+        where = getattr(exc, "problem_mark", None)
+        at = f" (line {where.line + 1}, column {where.column + 1})" if where is not None else ""
+        raise BusError(f"The passed value needs to be a dictionary in YAML format: "
+                       f"{getattr(exc, 'problem', None) or exc}{at}") from None
     return _fill(typename, values)
 
 

@@ -91,3 +91,18 @@ def _last_pair(lines: list[str], first: re.Pattern[str]) -> tuple[re.Match[str],
         if m := first.match(lines[i]):
             return m, lines[i + 1]
     pytest.fail(f"no complete report in {lines}")
+
+
+def test_topic_pub_yaml_fills_named_fields_and_refuses_wrong_ones() -> None:
+    from robotmodel.errors import BusError
+    from robotmodel.topic import message_from_yaml
+
+    msg = message_from_yaml("sensor_msgs/JointState", "{name: [a], position: [1], header: {stamp: {sec: 3}}}")
+    assert (msg.name, msg.position, msg.header.stamp.sec, msg.header.frame_id, msg.velocity) == (["a"], [1.0], 3, "",
+                                                                                                 [])
+    with pytest.raises(BusError, match="'String' object has no attribute 'dta'"):
+        message_from_yaml("std_msgs/msg/String", "{dta: x}")
+    with pytest.raises(BusError, match="The 'data' field must be of type 'str'"):
+        message_from_yaml("std_msgs/msg/String", "{data: 5}")
+    with pytest.raises(BusError, match="The passed message type is invalid"):
+        message_from_yaml("std_msgs/msg/Nope", "")
