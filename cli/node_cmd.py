@@ -8,7 +8,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from robotmodel.cli.topic_cmd import _add_bus_options
+from robotmodel.cli._bus_args import add_bus_options
 
 __all__ = ["register"]
 
@@ -23,12 +23,12 @@ def register(sub: Any) -> None:
     lst = verbs.add_parser("list", help="output a list of available nodes", description="Output a list of nodes.")
     lst.add_argument("-a", "--all", action="store_true", help="display all nodes even hidden ones")
     lst.add_argument("-c", "--count-nodes", action="store_true", help="only display the number of nodes discovered")
-    _add_bus_options(lst)
+    add_bus_options(lst)
     lst.set_defaults(func=run_list)
     info = verbs.add_parser("info", help="output information about a node",
                             description="Output information about a node.")
     info.add_argument("node_name", help="fully qualified node name to request information for (e.g. /talker)")
-    _add_bus_options(info)
+    add_bus_options(info)
     info.set_defaults(func=run_info)
 
 

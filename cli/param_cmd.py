@@ -10,7 +10,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from robotmodel.cli.topic_cmd import _add_bus_options
+from robotmodel.cli._bus_args import add_bus_options
 
 __all__ = ["register"]
 
@@ -25,24 +25,24 @@ def register(sub: Any) -> None:
     lst = verbs.add_parser("list", help="output a list of available parameters",
                            description="Output a list of available parameters.")
     lst.add_argument("node_name", nargs="?", default=None, help="name of the ROS node (default: every node)")
-    _add_bus_options(lst)
+    add_bus_options(lst)
     lst.set_defaults(func=run_list)
     get = verbs.add_parser("get", help="get parameter", description="Get parameter.")
     get.add_argument("node_name", help="name of the ROS node (ROS 1 form: the parameter's full name)")
     get.add_argument("parameter_name", nargs="?", default=None, help="name of the parameter")
     get.add_argument("--hide-type", action="store_true", help="hide the type information")
-    _add_bus_options(get)
+    add_bus_options(get)
     get.set_defaults(func=run_get)
     put = verbs.add_parser("set", help="set parameter", description="Set parameter.")
     put.add_argument("node_name", help="name of the ROS node (ROS 1 form: the parameter's full name)")
     put.add_argument("parameter_name", help="name of the parameter (ROS 1 form: the value)")
     put.add_argument("value", nargs="?", default=None, help="value of the parameter, in YAML")
-    _add_bus_options(put)
+    add_bus_options(put)
     put.set_defaults(func=run_set)
     dump = verbs.add_parser("dump", help="show all of the parameters of a node in a YAML file format",
                             description="Show all of the parameters of a node in a YAML file format.")
     dump.add_argument("node_name", help="name of the ROS node")
-    _add_bus_options(dump)
+    add_bus_options(dump)
     dump.set_defaults(func=run_dump)
 
 
