@@ -21,7 +21,7 @@ _TRUNCATE_LENGTH = 128
 def register(sub: Any) -> None:
     """Add the ``topic`` subcommand with its verbs."""
     parser: argparse.ArgumentParser = sub.add_parser(
-        "topic", aliases=["rostopic"], help="the topics on the bus: list, echo, hz, bw, info, type, pub (as ros2 topic)",
+        "topic", aliases=["rostopic"], help="the topics on the bus: list, echo, hz, bw, info, type, pub (ros2 topic)",
         description="Inspect and publish the topics of the ROS graph, on any wire.")
     verbs = parser.add_subparsers(dest="verb", metavar="VERB")
     verbs.required = True
