@@ -45,7 +45,7 @@ def run_node_info(node_name: str, *, connect: Sequence[str] = (), spin_time: flo
                         ("Service Servers", EntityKind.SERVICE), ("Service Clients", EntityKind.CLIENT)):
         print(f"  {title}:")
         for topic, typename in sorted({(e.topic, e.typename) for e in entities if e.kind == kind}):
-            print(f"    {topic}: {typename}")
+            print(f"    {topic}: {typename}" if typename else f"    {topic}")  # ROS 1's master has no service types
     print("  Action Servers:")
     print("  Action Clients:")
     return 0
