@@ -11,7 +11,10 @@ from rclpyside import DEADLINE_S
 def test_topic_pub_once_reaches_a_real_rclpy_subscription(rclpy: Any, procs: Any, bus_wire: str) -> None:
     assert bus_wire == "dds"
     listener = rclpy("joint_listener")
-    pub = procs.cli("topic", "pub", "--once", "/joint_states", "sensor_msgs/msg/JointState",
+    # --keep-alive 2 rather than ros2's 0.1 s: once our writer sees the reader, Fast DDS's side may not
+    # yet have matched it, and a writer gone after 0.1 s leaves nobody to repeat the sample (one run
+    # of the first three here lost it on the loaded machine; ros2 topic pub --once has the same window).
+    pub = procs.cli("topic", "pub", "--once", "--keep-alive", "2", "/joint_states", "sensor_msgs/msg/JointState",
                     "{name: [arm_elbow_joint], position: [0.25]}")
     assert pub.popen.wait(DEADLINE_S) == 0, pub.errors
     got = listener.wait_line("got ", timeout=DEADLINE_S)
