@@ -44,6 +44,8 @@ COMMAND_MODULES: tuple[str, ...] = (
     "robotmodel.cli.jsp_gui_cmd",
     "robotmodel.cli.view_cmd",
     "robotmodel.cli.topic_cmd",
+    "robotmodel.cli.node_cmd",
+    "robotmodel.cli.param_cmd",
     "robotmodel.cli.router_cmd",
     "robotmodel.cli.launch_cmd",
 )

@@ -1,6 +1,6 @@
-"""``robotmodel topic list|echo``: what is on the bus, as ``ros2 topic list`` and ``ros2 topic echo`` show it.
+"""``robotmodel topic list|echo|hz|bw|info|type|pub``: the bus's topics, as ``ros2 topic`` shows them.
 
-The programs are :func:`robotmodel.topic.run_topic_list` and :func:`robotmodel.topic.run_topic_echo`.
+The programs are :mod:`robotmodel.topic`'s ``run_topic_*``; ``rostopic`` is an alias.
 """
 
 from __future__ import annotations
@@ -8,27 +8,21 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
+from robotmodel.cli._bus_args import add_bus_options
 from robotmodel.cli._node_args import add_node_arguments
+from robotmodel.cli._topic_verbs import register_verbs
 
 __all__ = ["register"]
 
-# robotmodel.topic's defaults (not imported: --help stays light).
+# robotmodel.topic's default (not imported: --help stays light).
 _TRUNCATE_LENGTH = 128
-_SPIN_TIME = 0.5
-
-
-def _add_bus_options(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--connect", action="append", default=[], metavar="ENDPOINT",
-                        help="zenoh endpoint to connect to instead of the local rendezvous (repeatable)")
-    parser.add_argument("--spin-time", type=float, default=_SPIN_TIME, metavar="S",
-                        help=f"seconds to wait for discovery (default {_SPIN_TIME})")
 
 
 def register(sub: Any) -> None:
-    """Add the ``topic`` subcommand with its ``list`` and ``echo`` verbs."""
+    """Add the ``topic`` subcommand with its verbs."""
     parser: argparse.ArgumentParser = sub.add_parser(
-        "topic", help="list the topics on the bus, or print the messages of one (as ros2 topic)",
-        description="Inspect the ROS 2 graph on the zenoh bus (rmw_zenoh's wire format).")
+        "topic", aliases=["rostopic"], help="the topics on the bus: list, echo, hz, bw, info, type, pub (ros2 topic)",
+        description="Inspect and publish the topics of the ROS graph, on any wire.")
     verbs = parser.add_subparsers(dest="verb", metavar="VERB")
     verbs.required = True
 
@@ -37,7 +31,7 @@ def register(sub: Any) -> None:
     lst.add_argument("-t", "--show-types", action="store_true", help="additionally show the topic type")
     lst.add_argument("-c", "--count-topics", action="store_true", help="only display the number of topics")
     lst.add_argument("--include-hidden-topics", action="store_true", help="consider hidden topics as well")
-    _add_bus_options(lst)
+    add_bus_options(lst)
     lst.set_defaults(func=run_list)
 
     echo = verbs.add_parser("echo", help="output messages from a topic",
@@ -55,9 +49,10 @@ def register(sub: Any) -> None:
     echo.add_argument("--once", action="store_true", help="print the first message received and then exit")
     echo.add_argument("--timeout", type=float, metavar="N", default=None,
                       help="set a timeout in seconds for waiting")
-    _add_bus_options(echo)
+    add_bus_options(echo)
     add_node_arguments(echo, "_robotmodel_topic_echo")  # a relative TOPIC_NAME resolves under --namespace
     echo.set_defaults(func=run_echo)
+    register_verbs(verbs)
 
 
 def run_list(args: argparse.Namespace) -> int:
