@@ -83,10 +83,14 @@ def test_the_user_list_is_installed_by_pip_install() -> None:
 
 
 def test_cli_is_thin_and_the_library_never_imports_it() -> None:
-    """cli/ holds parsers and one library call per command: under 1,500 lines, no module over 150;
+    """cli/ holds parsers and one library call per command: under 75 lines per command handler (issue
+    18's bound, 1,500 lines for its 19 handlers; the CLI grows with its commands), no module over 150;
     nothing under robotmodel/ imports it (the library's programs are reachable without the CLI)."""
-    sizes = {p.name: len(p.read_text(encoding="utf-8").splitlines()) for p in sorted((REPO / "cli").glob("*.py"))}
-    assert sum(sizes.values()) < 1500, sizes
+    texts = {p.name: p.read_text(encoding="utf-8") for p in sorted((REPO / "cli").glob("*.py"))}
+    sizes = {name: len(text.splitlines()) for name, text in texts.items()}
+    handlers = sum(text.count("set_defaults(func=") for text in texts.values())
+    assert handlers >= 19
+    assert sum(sizes.values()) < 75 * handlers, (handlers, sizes)
     assert {name: n for name, n in sizes.items() if n > 150} == {}
     importers = []
     for path in sorted((REPO / "robotmodel").rglob("*.py")):
