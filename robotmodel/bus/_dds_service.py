@@ -33,6 +33,7 @@ import itertools
 import logging
 import struct
 import threading
+import time
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
@@ -55,6 +56,8 @@ log = logging.getLogger("robotmodel.bus")
 #: rmw_qos_profile_services_default: reliable, volatile, keep last 10.
 SERVICES_QOS = QoS(10)
 _HEADER = 16
+#: How long a server waits for a requesting client's reply reader to be discovered before it answers anyway.
+_READER_WAIT_S = 2.0
 
 
 def add_header(payload: bytes, guid: int, seq: int) -> bytes:
@@ -90,7 +93,8 @@ class _Pair:
     """
 
     def __init__(self, node: DdsNode, name: str, read: tuple[str, str], write: tuple[str, str],
-                 on_data: Callable[[bytes], None], type_hash: str, on_foreign: ForeignCallback | None = None) -> None:
+                 on_data: Callable[[bytes, bytes], None], type_hash: str,
+                 on_foreign: ForeignCallback | None = None) -> None:
         backend = node.backend
         self._node = node
         self.name = name
@@ -142,7 +146,7 @@ class _Pair:
                             count = self._counts[gid] = self._counts.get(gid, 0) + 1
                             self._on_foreign(data, gid, count)
                         elif not foreign:
-                            self._on_data(data)
+                            self._on_data(data, gid)
                     except Exception:  # one bad callback must not stop the service
                         log.exception("service '%s' failed on a sample", self.name)
 
@@ -152,6 +156,26 @@ class _Pair:
             if writer is None:
                 raise BusError(f"service endpoint of '{self.name}' is closed")
             write_raw(writer, payload, self.name, self._write_typename)
+
+    def wait_for_reader_of(self, participant: bytes, timeout: float) -> bool:
+        """Wait until our writer has matched a reader of that participant (GUID prefix); False at the deadline.
+
+        A reliable, volatile reply reaches only the readers matched when it is written: a server
+        can read a client's request before it has discovered that client's reply reader, as
+        rmw_cyclonedds_cpp knows (it waits for the reader before it sends a response).
+        """
+        deadline = time.monotonic() + timeout
+        while True:
+            writer = self._writer
+            if writer is None:
+                return False
+            for handle in writer.get_matched_subscriptions():
+                data = writer.get_matched_subscription_data(handle)
+                if data is not None and data.key.bytes[:12] == participant:
+                    return True
+            if time.monotonic() >= deadline:
+                return False
+            time.sleep(0.005)
 
     def matched(self) -> bool:
         reader, writer = self._reader, self._writer
@@ -189,7 +213,7 @@ class DdsService(Handle):
         self.reader_gid = self.pair.reader_gid
         self.writer_gid = self.pair.writer_gid
 
-    def _on_data(self, data: bytes) -> None:
+    def _on_data(self, data: bytes, writer: bytes) -> None:
         parts = split_header(data)
         if parts is None:
             return
@@ -199,6 +223,8 @@ class DdsService(Handle):
         def respond(response: bytes) -> None:
             if not answered.is_set():
                 answered.set()
+                # The client's reply reader lives in the participant of its request writer.
+                self.pair.wait_for_reader_of(writer[:12], _READER_WAIT_S)
                 self.pair.write(add_header(response, guid, seq))
 
         self._on_request(payload, RequestId(guid.to_bytes(8, "little") + bytes(8), seq), respond)
@@ -237,7 +263,7 @@ class DdsClient(ClientHandle):
         """See :attr:`ClientHandle.gid` (its request writer's GUID)."""
         return self.writer_gid
 
-    def _on_data(self, data: bytes) -> None:
+    def _on_data(self, data: bytes, _writer: bytes) -> None:
         parts = split_header(data)
         if parts is None or parts[0] != self._id:
             return
