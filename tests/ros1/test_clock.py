@@ -10,8 +10,6 @@ joint_state_publisher stamps and paces its messages in it, as rospy's Time.now()
 
 from __future__ import annotations
 
-import itertools
-import statistics
 import sys
 import time
 from pathlib import Path
@@ -65,4 +63,6 @@ def test_sim_time_from_a_rospy_clock(ros1: Ros1World) -> None:
     wait_until(lambda: len(joints.lines) > 10, 60, "ten messages of robotmodel's joint_state_publisher")
     stamps = [int(line.split()[1]) / 1e9 for line in joints.lines[1:11]]
     assert len(stamps) == 10 and all(START < t < START + 1000 for t in stamps), joints.lines[:11]
-    assert statistics.median(b - a for a, b in itertools.pairwise(stamps)) == pytest.approx(0.1, abs=0.02), stamps
+    # The mean spacing: each one is quantised by /clock's ticks (5x sim time), which a loaded machine
+    # coarsens (one CI simulation: 0.120, 0.073, 0.125, 0.060, ...; median 0.12, mean 0.101).
+    assert (stamps[-1] - stamps[0]) / (len(stamps) - 1) == pytest.approx(0.1, abs=0.02), stamps
