@@ -24,6 +24,16 @@ settings.register_profile(
 )
 settings.load_profile("robotmodel")
 
+
+def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+    """Run the slow tests (each pip-installs robotmodel into a new venv) first.
+
+    Collected in name order they came last, and under xdist a worker that starts a minutes-long
+    test at the end holds up the whole run; started first, each on its own worker (xdist hands
+    the first tests out round robin), they overlap the rest of the suite.
+    """
+    items.sort(key=lambda item: item.get_closest_marker("slow") is None)
+
 # A developer's shell with ROS 1 sourced (ROS_VERSION=1, ROS_MASTER_URI) would move every
 # process the tests start onto the ROS 1 wire (robotmodel.bus.default_wire); the tests name
 # the ROS 1 wire where they mean it (tests/ros1, the conformance suite's "ros1" cases).
