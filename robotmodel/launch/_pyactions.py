@@ -1,10 +1,7 @@
 """launch's description and actions (``launch``, ``launch.actions``, ``launch.event_handlers``).
 
-They are visited in order, depth first, as launch's service visits what each action returns.
-What launch would run later (``TimerAction``, the ``OnProcessStart``/``OnProcessExit`` handlers
-of ``RegisterEventHandler``) runs after everything else, in launch's order (process starts,
-then timers by period, then process exits): its processes start then, not at that moment,
-and a note says so.
+They are visited in order, depth first, as launch's service visits what each action returns;
+what launch would run later (timers, event handlers) is in :mod:`robotmodel.launch._pyevents`.
 """
 
 from __future__ import annotations
@@ -16,35 +13,24 @@ from typing import Any
 
 from robotmodel.errors import LaunchError
 from robotmodel.launch._pyconditions import Condition
-from robotmodel.launch._pyctx import Deferred, LaunchContext, user_site
-from robotmodel.launch._pysubst import Substitution, SubstitutionFailure, normalize, perform_all
+from robotmodel.launch._pyctx import LaunchContext, user_site
+from robotmodel.launch._pysubst import SubstitutionFailure, normalize, perform_all
 
 __all__ = [
     "Action",
     "AppendEnvironmentVariable",
     "DeclareLaunchArgument",
-    "EmitEvent",
     "ExecuteProcess",
     "GroupAction",
     "LaunchDescription",
     "LogInfo",
-    "OnExecutionComplete",
-    "OnProcessExit",
-    "OnProcessIO",
-    "OnProcessStart",
-    "OnShutdown",
     "OpaqueFunction",
     "PopLaunchConfigurations",
     "PushLaunchConfigurations",
-    "RegisterEventHandler",
     "SetEnvironmentVariable",
     "SetLaunchConfiguration",
-    "Shutdown",
-    "ShutdownEvent",
-    "TimerAction",
     "UnsetEnvironmentVariable",
     "UnsetLaunchConfiguration",
-    "run_deferred",
     "visit",
 ]
 
@@ -256,70 +242,6 @@ class OpaqueFunction(Action):
         return list(result) if result is not None else None
 
 
-class TimerAction(Action):
-    """Actions launch runs ``period`` seconds later: here after the rest (ordering only)."""
-
-    def __init__(self, *, period: Any, actions: Iterable[Any], **kwargs: Any) -> None:
-        super().__init__(**kwargs)
-        self.period, self.actions = period, list(actions)
-
-    def execute(self, context: LaunchContext) -> None:
-        """Defer them."""
-        try:
-            period = float(self.period) if not isinstance(self.period, Substitution | list) else float(
-                perform_all(context, normalize(self.period)))
-        except ValueError:
-            raise LaunchError(f"{self.where()}: TimerAction period '{self.period}' is not a number") from None
-        _defer(context, (1, period), self.actions, f"{self.where()}: TimerAction(period={period:g}): its actions "
-               "run after the others (ordering only; no delay)")
-
-
-class OnProcessStart:
-    """Run ``on_start`` once ``target_action`` started: here after the rest (ordering only)."""
-
-    def __init__(self, *, target_action: Any = None, on_start: Any = None, **kwargs: Any) -> None:
-        del kwargs
-        self.target_action, self.entities = target_action, on_start
-        self.rank, self.what = 0, "OnProcessStart"
-
-
-class OnProcessExit:
-    """Run ``on_exit`` once ``target_action`` exited: here after the rest (ordering only)."""
-
-    def __init__(self, *, target_action: Any = None, on_exit: Any = None, **kwargs: Any) -> None:
-        del kwargs
-        self.target_action, self.entities = target_action, on_exit
-        self.rank, self.what = 2, "OnProcessExit"
-
-
-class RegisterEventHandler(Action):
-    """Register an event handler: its actions run after the rest, in launch's order (ordering only)."""
-
-    def __init__(self, event_handler: Any, **kwargs: Any) -> None:
-        super().__init__(**kwargs)
-        self.event_handler = event_handler
-
-    def execute(self, context: LaunchContext) -> None:
-        """Defer its actions."""
-        handler = self.event_handler
-        if not isinstance(handler, OnProcessStart | OnProcessExit) or handler.rank < 0:
-            context.notes.append(f"{self.where()}: {type(handler).__name__} event handler ignored")
-            return
-        entities = handler.entities
-        if callable(entities):
-            context.notes.append(f"{self.where()}: {handler.what} with a function ignored (no process events here)")
-            return
-        entities = list(entities) if isinstance(entities, Iterable) else [entities] if entities else []
-        _defer(context, (handler.rank, 0.0), entities, f"{self.where()}: {handler.what}: its actions run after the "
-               "others (ordering only; not when the target starts or exits)")
-
-
-def _defer(context: LaunchContext, rank: tuple[int, float], entities: list[Any], note: str) -> None:
-    context.notes.append(note)
-    order = (rank[0], rank[1], len(context.deferred))
-    context.deferred.append(Deferred(order, entities, context.frame.pushed(), context.file))
-
-
 class LogInfo(Action):
     """A message for the console (as a note line)."""
 
@@ -342,28 +264,6 @@ class SetEnvironmentVariable(Action):
     def execute(self, context: LaunchContext) -> None:
         """Set it."""
         context.environment[perform_all(context, self.name)] = perform_all(context, self.value)
-
-
-class ShutdownEvent:
-    """launch.events.Shutdown: nothing to emit it to here."""
-
-    def __init__(self, *, reason: str = "reason not given", due_to_sigint: bool = False) -> None:
-        self.reason, self.due_to_sigint = reason, due_to_sigint
-
-
-class EmitEvent(Action):
-    """Emit an event: none has an effect here (the launcher ends on Ctrl-C or its processes' exits)."""
-
-    def __init__(self, *, event: Any, **kwargs: Any) -> None:
-        super().__init__(**kwargs)
-        self.event = event
-
-
-class Shutdown(EmitEvent):
-    """Shut the launch down: no effect while reading (its place in an event handler is ordering only)."""
-
-    def __init__(self, *, reason: str = "reason not given", **kwargs: Any) -> None:
-        super().__init__(event=ShutdownEvent(reason=reason), **kwargs)
 
 
 class AppendEnvironmentVariable(Action):
@@ -392,23 +292,6 @@ class UnsetEnvironmentVariable(Action):
     def execute(self, context: LaunchContext) -> None:
         """Unset it."""
         context.environment[perform_all(context, self.name)] = None
-
-
-class OnExecutionComplete(OnProcessStart):
-    """An action's completion: not an event here (the handler is noted and ignored)."""
-
-    def __init__(self, **kwargs: Any) -> None:
-        super().__init__()
-        del kwargs
-        self.rank, self.what = -1, "OnExecutionComplete"
-
-
-class OnShutdown(OnExecutionComplete):
-    """The launch's shutdown: not an event here (the handler is noted and ignored)."""
-
-
-class OnProcessIO(OnExecutionComplete):
-    """A process's output: not an event here (the handler is noted and ignored)."""
 
 
 class ExecuteProcess(Action):
@@ -441,20 +324,6 @@ def visit(entity: Any, context: LaunchContext) -> None:
         return
     for child in entity.execute(context) or []:
         visit(child, context)
-
-
-def run_deferred(context: LaunchContext) -> None:
-    """Run what launch would run later, in its order, each in the scope it was registered in."""
-    while context.deferred:
-        item = min(context.deferred, key=lambda d: d.order)
-        context.deferred.remove(item)
-        saved, saved_file = context.frame, context.file
-        context.frame, context.file = item.frame, item.file
-        try:
-            for entity in item.entities:
-                visit(entity, context)
-        finally:
-            context.frame, context.file = saved, saved_file
 
 
 def file_of(site: tuple[Path | None, int]) -> Path | None:

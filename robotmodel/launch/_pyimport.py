@@ -20,6 +20,7 @@ from typing import Any
 __all__ = ["MODULES", "standins"]
 
 _A = "robotmodel.launch._pyactions"
+_E = "robotmodel.launch._pyevents"
 _S = "robotmodel.launch._pysubst"
 _R = "robotmodel.launch._pyros"
 _D = "robotmodel.launch._pysources"
@@ -40,11 +41,11 @@ MODULES: dict[str, tuple[tuple[str, tuple[str, ...]], ...]] = {
     "launch.launch_context": ((_C, ("LaunchContext",)),),
     "launch.launch_description": ((_A, ("LaunchDescription",)),),
     "launch.launch_description_source": ((_D, ("LaunchDescriptionSource",)),),
-    "launch.actions": ((_A, ("AppendEnvironmentVariable", "DeclareLaunchArgument", "EmitEvent", "ExecuteProcess",
+    "launch.actions": ((_A, ("AppendEnvironmentVariable", "DeclareLaunchArgument", "ExecuteProcess",
                              "GroupAction", "LogInfo", "OpaqueFunction", "PopLaunchConfigurations",
-                             "PushLaunchConfigurations", "RegisterEventHandler", "SetEnvironmentVariable",
-                             "SetLaunchConfiguration", "Shutdown", "TimerAction", "UnsetEnvironmentVariable",
-                             "UnsetLaunchConfiguration")),
+                             "PushLaunchConfigurations", "SetEnvironmentVariable", "SetLaunchConfiguration",
+                             "UnsetEnvironmentVariable", "UnsetLaunchConfiguration")),
+                       (_E, ("EmitEvent", "RegisterEventHandler", "Shutdown", "TimerAction")),
                        (_D, ("IncludeLaunchDescription",))),
     "launch.substitutions": ((_S, ("Command", "EnvironmentVariable", "FindExecutable", "LaunchConfiguration",
                                    "PathJoinSubstitution", "PythonExpression", "SubstitutionFailure",
@@ -56,9 +57,9 @@ MODULES: dict[str, tuple[tuple[str, tuple[str, ...]], ...]] = {
                                 "evaluate_condition_expression")),),
     "launch.launch_description_sources": ((_D, ("AnyLaunchDescriptionSource", "FrontendLaunchDescriptionSource",
                                                 "PythonLaunchDescriptionSource")),),
-    "launch.event_handlers": ((_A, ("OnExecutionComplete", "OnProcessExit", "OnProcessIO", "OnProcessStart",
+    "launch.event_handlers": ((_E, ("OnExecutionComplete", "OnProcessExit", "OnProcessIO", "OnProcessStart",
                                     "OnShutdown")),),
-    "launch.events": ((_A, ("Shutdown=ShutdownEvent",)),),
+    "launch.events": ((_E, ("Shutdown=ShutdownEvent",)),),
     "launch.some_substitutions_type": ((_S, ("SomeSubstitutionsType",)),),
     "launch.utilities": ((_S, ("normalize_to_list_of_substitutions", "perform_substitutions")),),
     "launch_ros": (),

@@ -271,8 +271,9 @@ def include_python(loader: Any, path: Path, scope: Any, given: Mapping[str, str]
 
 def run_python(context: Any, path: Path, args: Mapping[str, str]) -> None:
     """Include Python launch file ``path`` with ``args`` into ``context`` and run what it defers."""
-    from robotmodel.launch._pyactions import run_deferred, visit
+    from robotmodel.launch._pyactions import visit
     from robotmodel.launch._pyctx import using
+    from robotmodel.launch._pyevents import run_deferred
     from robotmodel.launch._pyimport import standins
 
     with standins(), using(context):
