@@ -39,7 +39,7 @@ def register(sub: Any) -> None:
                                         "a ROS 1 bag also gets rosbag info's compression line.")
     info.add_argument("bag_path", metavar="FILE", help="the recording (a .bag or .mcap/.db3 file, or a bag folder)")
     info.set_defaults(func=_info)
-    record = verbs.add_parser("record", help="record topics from the bus into an MCAP file (as robotmodel record)",
+    record = verbs.add_parser("record", help="record topics from the bus into a bag (as robotmodel record)",
                               description="Record topics (default /tf /tf_static /joint_states /robot_description) "
                                           "into MCAP (rosbag2's ros2 profile, CDR) until Ctrl-C or SIGTERM; the same "
                                           "program as 'robotmodel record'.")

@@ -1,9 +1,10 @@
-"""``robotmodel record -o OUT.mcap [TOPIC ...]``: record topics from the bus into an MCAP file.
+"""``robotmodel record [-o NAME] [TOPIC ...]``: record topics from the bus into a bag folder or an MCAP file.
 
-As ``ros2 bag record`` with MCAP storage: rosbag2's ros2 profile, CDR payloads, receive
-times as log times. Default topics: /tf, /tf_static, /joint_states, /robot_description.
-Ctrl-C or SIGTERM finish the file (summary and index) and exit 0; a crash leaves every
-chunk flushed so far (one per second) recoverable. The program is :func:`robotmodel.recording.run_record`.
+As ``ros2 bag record`` with MCAP storage (a bag folder; ``-o OUT.mcap`` a bare MCAP file):
+rosbag2's ros2 profile, CDR payloads, receive times as log times. Default topics: /tf,
+/tf_static, /joint_states, /robot_description. Ctrl-C or SIGTERM finish the recording
+(summary, index, metadata.yaml) and exit 0; a crash leaves every chunk flushed so far (one
+per second) recoverable. The program is :func:`robotmodel.recording.run_record`.
 """
 
 from __future__ import annotations
@@ -17,7 +18,7 @@ __all__ = ["add_record_arguments", "register", "run"]
 def register(sub: Any) -> None:
     """Add the ``record`` subcommand."""
     parser: argparse.ArgumentParser = sub.add_parser(
-        "record", help="record topics from the bus into an MCAP file (ros2 bag record)",
+        "record", help="record topics from the bus into a bag (ros2 bag record)",
         description="Record topics (default /tf /tf_static /joint_states /robot_description) into MCAP "
                     "(rosbag2's ros2 profile, CDR) until Ctrl-C or SIGTERM.",
     )
@@ -30,10 +31,14 @@ def add_record_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("-a", "--all", action="store_true",
                         help="record every topic, including those that appear later (hidden ones excepted), "
                              "as ros2 bag / rosbag record -a")
-    output = parser.add_mutually_exclusive_group(required=True)
-    output.add_argument("-o", "--output", metavar="OUT.mcap", help="the MCAP file to write")
+    output = parser.add_mutually_exclusive_group()
+    output.add_argument("-o", "--output", metavar="NAME",
+                        help="the bag folder to write, as ros2 bag record (NAME/NAME_0.mcap and metadata.yaml; "
+                             "default rosbag2_YYYY_MM_DD-HH_MM_SS), or one MCAP file when NAME ends in .mcap")
     output.add_argument("-O", "--output-name", dest="output_name", metavar="NAME",
                         help="rosbag record's form: write NAME, with .mcap added unless it ends so")
+    parser.add_argument("-s", "--storage", choices=["mcap"], default="mcap",
+                        help="storage of the bag (MCAP, rosbag2's default since Iron)")
     parser.add_argument("--flush-interval", type=float, default=1.0, metavar="SECONDS",
                         help="finish a chunk and flush it to disk this often (default 1.0)")
     parser.add_argument("--connect", action="append", default=[], metavar="ENDPOINT",

@@ -68,6 +68,10 @@ class McapWriter:
         self._flush_every_ns = int(flush_every_s * 1e9)
         self._next_flush = time.monotonic_ns() + self._flush_every_ns
         self.messages = 0
+        self._counts: dict[str, int] = {}
+        self._qos: dict[str, str] = {}
+        self.first_ns: int | None = None
+        self.last_ns: int | None = None
         self._unflushed = False
         self.closed = False
 
@@ -109,6 +113,8 @@ class McapWriter:
                                                     metadata=metadata)
             self._channels[topic] = (channel, msgtype)
             self._sequence[topic] = 0
+            self._counts[topic] = 0
+            self._qos[topic] = metadata["offered_qos_profiles"]
 
     def write(self, topic: str, log_ns: int, data: bytes, publish_ns: int | None = None) -> None:
         """Append one CDR message of a declared topic."""
@@ -120,6 +126,9 @@ class McapWriter:
             self._writer.add_message(channel, log_time=log_ns, data=data,
                                      publish_time=log_ns if publish_ns is None else publish_ns, sequence=seq)
             self.messages += 1
+            self._counts[topic] += 1
+            self.first_ns = log_ns if self.first_ns is None else min(self.first_ns, log_ns)
+            self.last_ns = log_ns if self.last_ns is None else max(self.last_ns, log_ns)
             self._unflushed = True
             now = time.monotonic_ns()
             if now >= self._next_flush:
@@ -165,3 +174,8 @@ class McapWriter:
     def topics(self) -> dict[str, Any]:
         """Declared topics and their types."""
         return {t: ty for t, (_, ty) in self._channels.items()}
+
+    def topic_counts(self) -> list[tuple[str, str, str, int]]:
+        """Each declared topic: (name, type, offered QoS YAML, messages written), in declaration order."""
+        with self._lock:
+            return [(t, ty, self._qos[t], self._counts[t]) for t, (_, ty) in self._channels.items()]

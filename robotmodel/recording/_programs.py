@@ -12,40 +12,54 @@ _NODE = "rosbag2_recorder"
 _RECORDED = ("/tf", "/tf_static", "/joint_states", "/robot_description")
 
 
-def run_record(output: str, topics: Sequence[str] = (), *, all_topics: bool = False, flush_interval: float = 1.0,
-               connect: Sequence[str] = ()) -> int:
+def run_record(output: str | None, topics: Sequence[str] = (), *, all_topics: bool = False,
+               flush_interval: float = 1.0, connect: Sequence[str] = ()) -> int:
     """``ros2 bag record`` into MCAP until SIGINT/SIGTERM (default topics: TF, joint states, the robot); exit code.
 
-    rosbag2's ros2 profile, CDR payloads, receive times as log times. A stop finishes the
-    file (summary and index); a crash leaves every chunk flushed so far (one per
-    ``flush_interval`` seconds) recoverable. An existing ``output`` is never overwritten.
-    ``all_topics`` records every topic the graph shows, now or later (``-a``); then no default topics.
+    rosbag2's ros2 profile, CDR payloads, receive times as log times. ``output`` ending in
+    ``.mcap`` is one MCAP file; any other name is a bag folder as ``ros2 bag record -o``
+    writes it (``NAME/NAME_0.mcap`` and ``metadata.yaml``), and none is the folder
+    ``rosbag2_YYYY_MM_DD-HH_MM_SS``. A stop finishes the file (summary and index) and the
+    folder's metadata; a crash leaves every chunk flushed so far (one per ``flush_interval``
+    seconds) recoverable. An existing ``output`` is never overwritten. ``all_topics``
+    records every topic the graph shows, now or later (``-a``); then no default topics.
     """
     from robotmodel.bus import Node
     from robotmodel.rcl import ros_log
+    from robotmodel.recording._bagdir import default_folder_name, open_bag_folder, write_metadata
     from robotmodel.recording._mcap import McapWriter
     from robotmodel.recording._record import Recorder
     from robotmodel.signals import stop_on_signals
 
-    out = Path(output)
-    if out.exists():
-        print(f"robotmodel record: error: {out} already exists (not overwritten)", file=sys.stderr)
-        return 1
     if not flush_interval > 0:
         print("robotmodel record: error: --flush-interval must be > 0", file=sys.stderr)
         return 2
+    bare = output is not None and output.endswith(".mcap")
+    out = Path(output or default_folder_name())
+    folder = None if bare else out
+    if out.exists():
+        what = f"{out} already exists (not overwritten)" if folder is None else f"Output folder '{out}' already exists."
+        print(f"robotmodel record: error: {what}", file=sys.stderr)
+        return 1
     stop = stop_on_signals()
-    with McapWriter(out, flush_every_s=flush_interval) as writer, Node(_NODE, connect=list(connect)) as node:
-        recorder = Recorder(node, writer, list(topics) or ([] if all_topics else list(_RECORDED)),
-                            all_topics=all_topics,
-                            on_subscribed=lambda t, _ty: ros_log("INFO", _NODE, f"Subscribed to topic '{t}'"))
-        ros_log("INFO", _NODE, f"Recording to '{out}'...")
-        try:
-            # Flushes in quiet spells too, so a crash never loses more than one interval.
-            while not stop.wait(flush_interval / 2):
-                writer.flush_if_due()
-        finally:
-            recorder.close()
+    try:
+        with McapWriter(out if folder is None else open_bag_folder(folder), flush_every_s=flush_interval) as writer, \
+                Node(_NODE, connect=list(connect)) as node:
+            recorder = Recorder(node, writer, list(topics) or ([] if all_topics else list(_RECORDED)),
+                                all_topics=all_topics,
+                                on_subscribed=lambda t, _ty: ros_log("INFO", _NODE, f"Subscribed to topic '{t}'"))
+            ros_log("INFO", _NODE, f"Recording to '{out}'...")
+            try:
+                # Flushes in quiet spells too, so a crash never loses more than one interval.
+                while not stop.wait(flush_interval / 2):
+                    writer.flush_if_due()
+            finally:
+                recorder.close()
+    finally:
+        if folder is not None and folder.is_dir() and not any(folder.iterdir()):
+            folder.rmdir()  # a recording that could not start leaves nothing behind
+    if folder is not None:
+        write_metadata(folder, writer)
     ros_log("INFO", _NODE, f"Recording stopped: {writer.messages} message(s) in '{out}'")
     return 0
 

@@ -14,7 +14,7 @@ from handfk import HandFK
 from recording.bagfiles import TS2
 from recording.test_load import mat
 
-from robotmodel.recording import McapWriter, load_recording, qos_yaml
+from robotmodel.recording import McapWriter, bag_info, load_recording, qos_yaml
 
 URDF = """<?xml version="1.0"?>
 <robot name="rec2">
@@ -334,13 +334,57 @@ def test_record_output_forms_and_tf_echo_alias(tmp_path):
         return subprocess.run([sys.executable, "-m", "robotmodel.cli.main", *words], check=False,
                               capture_output=True, text=True, timeout=60, cwd=tmp_path)
 
-    proc = run("record", "-a")
-    assert proc.returncode == 2 and "one of the arguments -o/--output -O/--output-name is required" in proc.stderr
     proc = run("record", "-o", "a.mcap", "-O", "b")
     assert proc.returncode == 2 and "not allowed with argument" in proc.stderr
     (tmp_path / "taken.mcap").write_bytes(b"keep")
     proc = run("record", "-O", "taken")  # NAME gets .mcap, as rosbag's -O NAME gets .bag
     assert proc.returncode == 1 and "taken.mcap already exists" in proc.stderr
+    (tmp_path / "folder").mkdir()
+    proc = run("bag", "record", "-o", "folder")  # ros2 bag record's text; the folder is left as it was
+    assert proc.returncode == 1 and "Output folder 'folder' already exists." in proc.stderr
+    assert list((tmp_path / "folder").iterdir()) == []
+    proc = run("bag", "record", "-o", "never", "--connect", "nonsense")  # could not start: no folder left
+    assert proc.returncode == 1 and not (tmp_path / "never").exists(), proc.stderr
     # ROS 1's tf_echo name runs tf2_echo.
     proc = run("tf_echo", "--help")
     assert proc.returncode == 0 and proc.stdout.startswith("Usage: tf2_echo source_frame target_frame")
+
+
+def test_bag_record_writes_a_rosbag2_folder_as_ros2_bag_record(bus, tmp_path):
+    """``bag record`` without -o: a ``rosbag2_YYYY_MM_DD-HH_MM_SS`` folder in the current directory with
+    ``<name>_0.mcap`` and metadata.yaml, which rosbags' rosbag2 reader (it needs the metadata) opens;
+    the metadata's counts and times are those of the messages in the MCAP file, read with mcap."""
+    import datetime
+    import re
+
+    from rosbags.rosbag2 import Reader
+
+    urdf = tmp_path / "rec2.urdf"
+    urdf.write_text(URDF)
+    before = datetime.datetime.now().replace(microsecond=0)
+    rec = bus.robotmodel("bag", "record", "--flush-interval", "0.2", "/tf", "/robot_description")  # cwd: tmp_path
+    rec.wait_line(r"Subscribed to topic '/tf'", stream="err", timeout=60)
+    rsp = bus.robotmodel("robot-state-publisher", str(urdf))
+    jsp = bus.robotmodel("joint-state-publisher", str(urdf), "--rate", "50")
+    folders = [p for p in tmp_path.iterdir() if p.is_dir()]
+    assert len(folders) == 1 and re.fullmatch(r"rosbag2_\d{4}_\d\d_\d\d-\d\d_\d\d_\d\d", folders[0].name), folders
+    folder = folders[0]
+    named = datetime.datetime.strptime(folder.name, "rosbag2_%Y_%m_%d-%H_%M_%S")
+    assert before <= named <= datetime.datetime.now()  # local time, as ros2 bag names it
+    storage = folder / f"{folder.name}_0.mcap"
+    wait_file(rec, storage, lambda m: tf_span_s(m) >= 0.5 and any(t == "/robot_description" for t, _, _ in m),
+              "/tf and the robot description in the bag")
+    assert rec.stop(signal.SIGINT) == 0, rec.err[-5:]
+    for proc in (rsp, jsp):
+        assert proc.stop() == 0
+    msgs = readable(storage)
+    with Reader(folder) as reader:
+        assert reader.message_count == len(msgs)
+        assert {c.topic: c.msgcount for c in reader.connections} == {
+            t: sum(1 for m in msgs if m[0] == t) for t in ("/tf", "/robot_description")}
+        assert reader.start_time == min(m[1] for m in msgs) and reader.end_time == max(m[1] for m in msgs) + 1
+        assert {c.msgtype for c in reader.connections} == {TF, "std_msgs/msg/String"}
+        assert reader.ros_distro == "jazzy" and not reader.compression_mode
+    assert sorted(p.name for p in folder.iterdir()) == sorted(["metadata.yaml", storage.name])
+    info = bag_info(folder)  # and robotmodel's own readers take the folder
+    assert info.files == (storage.name,) and info.storage_id == "mcap" and info.message_count == len(msgs)
