@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import logging
 import threading
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from typing import Any, cast
 
 from cyclonedds.core import DDSException, Policy, Qos
@@ -56,6 +56,7 @@ from robotmodel.bus._backend import (
     SampleInfo,
     ServiceType,
 )
+from robotmodel.bus._book import NodeBook, OnClose
 from robotmodel.bus._dds_graph import DdsGraph, LocalNode
 from robotmodel.bus._dds_qos import POLICY_NAMES, check_peers, cyclone_config, qos_to_dds
 from robotmodel.bus._dds_raw import Pump, destroy, make_listener, take_raw, write_raw
@@ -157,9 +158,8 @@ class DdsBackend(Backend):
         self.participant = participant
         self.graph = DdsGraph(participant)
         self._topics: dict[tuple[str, str], Any] = {}
-        self._nodes: list[DdsNode] = []
+        self._nodes: NodeBook[DdsNode] = NodeBook("DDS")
         self._lock = threading.RLock()
-        self._closed = False
 
     @classmethod
     def open(cls, domain_id: int, connect: Sequence[str] = ()) -> DdsBackend:
@@ -191,26 +191,16 @@ class DdsBackend(Backend):
 
     def create_node(self, name: str, namespace: str, enclave: str = "/") -> DdsNode:
         """See :meth:`Backend.create_node`."""
-        with self._lock:
-            if self._closed:
-                raise BusError("the DDS session is closed")
-        # Made outside the session's lock: announcing it takes the graph's lock, and the
-        # graph's thread may be waiting for the session's (an untyped subscription's reader).
-        node = DdsNode(self, name, namespace)
-        with self._lock:
-            self._nodes.append(node)
-        return node
+        return self._nodes.add(lambda: DdsNode(self, name, namespace))
 
     def forget(self, node: DdsNode) -> None:
         """Drop a closed node from the session's list."""
-        with self._lock:
-            if node in self._nodes:
-                self._nodes.remove(node)
+        self._nodes.forget(node)
 
     def watch_graph(self, callback: GraphCallback) -> Handle:
         """See :meth:`Backend.watch_graph`: ros_discovery_info joined with DDS's built-in topics."""
         self.graph.watch(callback)
-        return _Closer(lambda: self.graph.unwatch(callback))
+        return OnClose(lambda: self.graph.unwatch(callback))
 
     def qos_incompatibility(self, publisher: QoS, subscription: QoS) -> str:
         """See :meth:`Backend.qos_incompatibility`: rmw_dds_common's rules, which DDS enforces."""
@@ -218,26 +208,14 @@ class DdsBackend(Backend):
 
     def close(self) -> None:
         """See :meth:`Backend.close`: the participant leaves, taking every entity with it."""
-        with self._lock:
-            if self._closed:
-                return
-            self._closed = True
-            nodes, self._nodes = list(self._nodes), []
-        for node in reversed(nodes):
+        nodes = self._nodes.close()
+        if nodes is None:
+            return
+        for node in nodes:
             node.close()
         self.graph.close()
         destroy(self.participant)
         _leave_domain(self.domain_id)
-
-
-class _Closer(Handle):
-    def __init__(self, fn: Callable[[], None]) -> None:
-        self._fn: Callable[[], None] | None = fn
-
-    def close(self) -> None:
-        fn, self._fn = self._fn, None
-        if fn is not None:
-            fn()
 
 
 class DdsNode(NodeHandle):

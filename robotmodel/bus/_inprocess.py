@@ -42,6 +42,7 @@ from robotmodel.bus._backend import (
     SampleInfo,
     ServiceType,
 )
+from robotmodel.bus._book import NodeBook, OnClose
 from robotmodel.bus._qos import QoS, incompatible_policy
 from robotmodel.errors import BusError
 
@@ -139,10 +140,9 @@ class InProcessBackend(Backend):
         self.session_id = f"inprocess{next(_SESSIONS)}"
         self._bus = _BUS
         self._ids = itertools.count()
-        self._nodes: list[_LocalNode] = []
+        self._nodes: NodeBook[_LocalNode] = NodeBook("in-process")
         self._watches: list[Handle] = []
         self._lock = threading.Lock()
-        self._closed = False
 
     @classmethod
     def open(cls, domain_id: int, connect: Sequence[str] = ()) -> InProcessBackend:
@@ -157,19 +157,11 @@ class InProcessBackend(Backend):
 
     def create_node(self, name: str, namespace: str, enclave: str = "/") -> NodeHandle:
         """See :meth:`Backend.create_node`."""
-        with self._lock:
-            if self._closed:
-                raise BusError("the in-process session is closed")
-        node = _LocalNode(self, name, namespace, enclave)
-        with self._lock:
-            self._nodes.append(node)
-        return node
+        return self._nodes.add(lambda: _LocalNode(self, name, namespace, enclave))
 
     def forget(self, node: _LocalNode) -> None:
         """Drop a closed node from the session's list."""
-        with self._lock:
-            if node in self._nodes:
-                self._nodes.remove(node)
+        self._nodes.forget(node)
 
     def watch_graph(self, callback: GraphCallback) -> Handle:
         """See :meth:`Backend.watch_graph`."""
@@ -186,7 +178,7 @@ class InProcessBackend(Backend):
                 if entry in bus.watchers:
                     bus.watchers.remove(entry)
 
-        handle = _Closer(remove)
+        handle = OnClose(remove)
         with self._lock:
             self._watches.append(handle)
         return handle
@@ -197,26 +189,15 @@ class InProcessBackend(Backend):
 
     def close(self) -> None:
         """See :meth:`Backend.close`."""
+        nodes = self._nodes.close()
+        if nodes is None:
+            return
         with self._lock:
-            if self._closed:
-                return
-            self._closed = True
-            nodes, self._nodes = list(self._nodes), []
             watches, self._watches = self._watches, []
-        for node in reversed(nodes):
+        for node in nodes:
             node.close()
         for watch in watches:
             watch.close()
-
-
-class _Closer(Handle):
-    def __init__(self, fn: Callable[[], None]) -> None:
-        self._fn: Callable[[], None] | None = fn
-
-    def close(self) -> None:
-        fn, self._fn = self._fn, None
-        if fn is not None:
-            fn()
 
 
 class _LocalNode(NodeHandle):
@@ -306,7 +287,7 @@ class _LocalNode(NodeHandle):
                 if mtype is not None:
                     bus.announce(backend.domain_id, key, None)
 
-        handle = _Closer(remove)
+        handle = OnClose(remove)
         self._children.append(handle)
         return handle
 
@@ -335,7 +316,7 @@ class _LocalNode(NodeHandle):
                     bus.services.remove(entry)
                 bus.announce(backend.domain_id, key, None)
 
-        handle = _Closer(remove)
+        handle = OnClose(remove)
         self._children.append(handle)
         return handle
 

@@ -48,6 +48,7 @@ from robotmodel.bus._backend import (
     SampleCallback,
     SampleInfo,
 )
+from robotmodel.bus._book import NodeBook
 from robotmodel.bus._qos import DEFAULT_DEPTH, History, QoS
 from robotmodel.bus._ros1_graph import GRAPH_PERIOD_S, GraphPoller, GraphWatch, ros1_gid, ros2_type_name
 from robotmodel.errors import BusError, MasterError
@@ -247,10 +248,8 @@ class Ros1Backend(Backend):
     def __init__(self, domain_id: int, master_uri: str) -> None:
         super().__init__(domain_id)
         self.master_uri = master_uri
-        self._lock = threading.Lock()
-        self._nodes: list[Ros1NodeHandle] = []
+        self._nodes: NodeBook[Ros1NodeHandle] = NodeBook("ROS 1")
         self._poller = GraphPoller(self.master_uri)
-        self._closed = False
 
     @classmethod
     def open(cls, domain_id: int, connect: Sequence[str] = ()) -> Ros1Backend:
@@ -268,20 +267,13 @@ class Ros1Backend(Backend):
     def create_node(self, name: str, namespace: str, enclave: str = "/") -> NodeHandle:
         """See :meth:`Backend.create_node` (ROS 1 has no enclaves)."""
         del enclave
-        with self._lock:
-            if self._closed:
-                raise BusError("the ROS 1 session is closed")
-        node = Ros1NodeHandle(self, name, namespace)
-        with self._lock:
-            self._nodes.append(node)
+        node = self._nodes.add(lambda: Ros1NodeHandle(self, name, namespace))
         self.graph_changed()
         return node
 
     def forget(self, node: Ros1NodeHandle) -> None:
         """A node closed: drop it from the session."""
-        with self._lock:
-            if node in self._nodes:
-                self._nodes.remove(node)
+        self._nodes.forget(node)
         self.graph_changed()
 
     def graph_changed(self) -> None:
@@ -300,11 +292,9 @@ class Ros1Backend(Backend):
 
     def close(self) -> None:
         """Close every node (unregistering all at the master), then stop following the graph."""
-        with self._lock:
-            if self._closed:
-                return
-            self._closed = True
-            nodes, self._nodes = list(self._nodes), []
-        for node in reversed(nodes):
+        nodes = self._nodes.close()
+        if nodes is None:
+            return
+        for node in nodes:
             node.close()
         self._poller.close()

@@ -14,9 +14,9 @@ from robotmodel.bus import BACKENDS, BusError, Context, open_backend
 
 ROOT = Path(robotmodel.__file__).resolve().parent
 BUS = ROOT / "bus"
-# Modules below the seam: the wires and what only they use.
+# Modules below the seam: the wires and what only they use (_book: the bookkeeping they share).
 WIRE_MODULES = {"_inprocess", "_zenoh", "_zenoh_names", "_zenoh_session", "_attachment", "_config", "_router", "_ros1", "_ros1_graph",
-                "_dds", "_dds_types", "_dds_qos", "_dds_raw", "_dds_graph", "_dds_service", "_zenoh_service"}
+                "_dds", "_dds_types", "_dds_qos", "_dds_raw", "_dds_graph", "_dds_service", "_zenoh_service", "_book"}
 # The bus's own modules above the seam (the package's __init__ re-exports zenoh's name helpers
 # for users of the wire format, and is not counted).
 ABOVE = ["_backend", "_node", "_graph", "_codec", "_ros1codec", "_ros1clock", "_ros1remaps", "_names", "_qos", "_remap",
