@@ -30,6 +30,7 @@ from __future__ import annotations
 from robotmodel.errors import RosArgsError
 from robotmodel.rcl._args import (
     RosArgs,
+    apply_log_levels,
     logger_name,
     node_namespace,
     node_params,
@@ -40,7 +41,7 @@ from robotmodel.rcl._args import (
     take_ros_args,
     warn_ignored_params,
 )
-from robotmodel.rcl._console import log_line, ros_console, ros_log
+from robotmodel.rcl._console import effective_level, log_enabled, log_line, ros_console, ros_log, set_log_level
 from robotmodel.rcl._params import (
     ParamEntry,
     ParamValue,
@@ -60,7 +61,10 @@ __all__ = [
     "Ros1Words",
     "RosArgs",
     "RosArgsError",
+    "apply_log_levels",
+    "effective_level",
     "is_param_name",
+    "log_enabled",
     "log_line",
     "logger_name",
     "node_namespace",
@@ -73,6 +77,7 @@ __all__ = [
     "ros1_wire",
     "ros_console",
     "ros_log",
+    "set_log_level",
     "split_node_words",
     "split_ros_words",
     "take_node_args",

@@ -13,7 +13,9 @@
   the value given last wins). robot-state-publisher and joint-state-publisher map them onto
   their settings (the parameter wins over the same setting's ``--flag``, as ``__ns`` wins
   over ``--namespace``); other commands say which overrides they ignore.
-- ``--log-level``, ``--enclave``, ``--log-config-file``, ``--log-file-name`` and rcl's
+- ``--log-level [logger:=]LEVEL`` sets the console's levels (a node command's own lines and
+  a stand-in rclpy node's loggers), as rcl does: the default level, or one logger's.
+- ``--enclave``, ``--log-config-file``, ``--log-file-name`` and rcl's
   ``--enable-*``/``--disable-*`` flags are accepted and have no effect here. Any other word
   inside a block is refused, as rclcpp refuses unknown ROS arguments.
 - ``--namespace NS``: the namespace a node is created with in code (rclpy's
@@ -33,6 +35,7 @@ from robotmodel.errors import RosArgsError
 
 __all__ = [
     "RosArgs",
+    "apply_log_levels",
     "logger_name",
     "node_namespace",
     "node_params",
@@ -64,6 +67,8 @@ class RosArgs:
     remaps: tuple[str, ...] = ()
     #: Parameter overrides (node pattern, name, value), in command-line order; see ``_ros_params``.
     params: tuple[tuple[str, str, Any], ...] = ()
+    #: ``--log-level [logger:=]LEVEL`` in command-line order ("" names the default level).
+    log_levels: tuple[tuple[str, str], ...] = ()
 
 
 def _check_namespace(namespace: str) -> str:
@@ -113,6 +118,7 @@ def take_ros_args(words: Sequence[str], node_name: str | None = None) -> tuple[R
     found: dict[str, str] = {}
     remaps: list[str] = []
     params: list[tuple[str, str, Any]] = []
+    levels: list[tuple[str, str]] = []
     unknown: list[str] = []
     inside = False
     i = 0
@@ -137,9 +143,12 @@ def take_ros_args(words: Sequence[str], node_name: str | None = None) -> tuple[R
                 params.append(param_rule_entry(word, value))
             elif word == "--params-file":
                 params.extend(param_file_entries(word, value))
-            elif word == "--log-level" and value.rpartition(":=")[2].upper() not in _SEVERITIES:
-                raise RosArgsError(f"Couldn't parse log level: '{word} {value}'. Error: Argument does not use a "
-                                   "valid severity level")
+            elif word == "--log-level":
+                logger, _, level = value.rpartition(":=")
+                if level.upper() not in _SEVERITIES:
+                    raise RosArgsError(f"Couldn't parse log level: '{word} {value}'. Error: Argument does not use "
+                                       "a valid severity level")
+                levels.append((logger, level))
             i += 1
         else:
             unknown.append(word)
@@ -147,7 +156,8 @@ def take_ros_args(words: Sequence[str], node_name: str | None = None) -> tuple[R
     if unknown:
         # rclcpp refuses them (UnknownROSArgsError): '__ns:=/r1' without its -r would otherwise do nothing.
         raise RosArgsError("found unknown ROS arguments: '" + "', '".join(unknown) + "'")
-    return RosArgs(found.get("namespace"), found.get("node_name"), tuple(remaps), tuple(params)), rest
+    return RosArgs(found.get("namespace"), found.get("node_name"), tuple(remaps), tuple(params),
+                   tuple(levels)), rest
 
 
 def take_node_args(words: Sequence[str], node_name: str | None = None,
@@ -160,12 +170,21 @@ def take_node_args(words: Sequence[str], node_name: str | None = None,
     from robotmodel.rcl._ros1args import ros1_wire, take_ros1_args
 
     ros, rest = take_ros_args(words, node_name)
+    apply_log_levels(ros)
     if not ros1_wire(environ):
         return ros, rest
     ros1, rest = take_ros1_args(rest)
     return replace(ros, namespace=ros.namespace if ros.namespace is not None else ros1.namespace,
                    node_name=ros.node_name if ros.node_name is not None else ros1.node_name,
                    remaps=ros1.remaps + ros.remaps, params=ros1.params + ros.params), rest
+
+
+def apply_log_levels(ros: RosArgs) -> None:
+    """Set the console's levels from ``--log-level`` (as rcl's init does for the process)."""
+    from robotmodel.rcl._console import set_log_level
+
+    for logger, level in ros.log_levels:
+        set_log_level(logger, level)
 
 
 def _trailing(flag: str) -> str:

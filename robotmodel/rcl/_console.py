@@ -14,7 +14,37 @@ import sys
 import time
 from typing import TextIO
 
-__all__ = ["log_line", "ros_console", "ros_log", "strtod_prefix"]
+__all__ = ["SEVERITIES", "effective_level", "log_enabled", "log_line", "ros_console", "ros_log", "set_log_level",
+           "strtod_prefix"]
+
+#: rcutils' severities and their numbers.
+SEVERITIES = {"UNSET": 0, "DEBUG": 10, "INFO": 20, "WARN": 30, "ERROR": 40, "FATAL": 50}
+# Logger name -> level; "" is the default level, as rcutils' (``--log-level LEVEL``).
+_levels: dict[str, int] = {"": SEVERITIES["INFO"]}
+
+
+def set_log_level(logger: str, level: int | str) -> None:
+    """Set a logger's level (``""``: the default of every logger not given one), as ``--log-level [name:=]LEVEL``."""
+    if isinstance(level, str):
+        key = level.strip().upper()
+        level = SEVERITIES["WARN" if key == "WARNING" else key]
+    _levels[logger] = int(level)
+
+
+def effective_level(logger: str) -> int:
+    """The level in force for ``logger``: its own, else its nearest dotted ancestor's, else the default."""
+    name = logger
+    while name:
+        level = _levels.get(name)
+        if level:
+            return level
+        name = name.rpartition(".")[0]
+    return _levels[""]
+
+
+def log_enabled(severity: str, logger: str) -> bool:
+    """Whether a line of ``severity`` from ``logger`` prints under the levels set."""
+    return SEVERITIES.get(severity, SEVERITIES["FATAL"]) >= effective_level(logger)
 
 # strtod's grammar (decimal, hexadecimal, inf/infinity, nan with an optional tag), after
 # optional leading white space. Compiled on first use: `robotmodel --help` never needs it.
@@ -61,6 +91,8 @@ def log_line(severity: str, logger: str, message: str, now_ns: int | None = None
 
 def ros_log(severity: str, logger: str, message: str, stream: TextIO | None = None) -> None:
     """Write :func:`log_line` to stderr (where rcutils sends every severity) and flush."""
+    if not log_enabled(severity, logger):
+        return
     out = sys.stderr if stream is None else stream
     print(log_line(severity, logger, message), file=out, flush=True)
 
@@ -74,6 +106,8 @@ class _RcutilsHandler(logging.Handler):
     def emit(self, record: logging.LogRecord) -> None:
         try:
             severity = _SEVERITY.get(record.levelno, record.levelname)
+            if not log_enabled(severity, record.name):
+                return
             text = log_line(severity, record.name, record.getMessage(), int(record.created * 1e9))
             print(text, file=sys.stderr, flush=True)
         except Exception:
@@ -81,10 +115,13 @@ class _RcutilsHandler(logging.Handler):
 
 
 def ros_console(name: str) -> logging.Logger:
-    """The logger ``name`` printing INFO and above to stderr in rcutils' format, as a ROS 2 node's does."""
+    """The logger ``name`` printing to stderr in rcutils' format, as a ROS 2 node's does.
+
+    INFO and above unless ``--log-level`` said otherwise (:func:`set_log_level`).
+    """
     logger = logging.getLogger(name)
     if not any(isinstance(h, _RcutilsHandler) for h in logger.handlers):
         logger.addHandler(_RcutilsHandler())
-    logger.setLevel(logging.INFO)
+    logger.setLevel(logging.DEBUG)  # the handler decides, by the rcutils levels in force
     logger.propagate = False
     return logger

@@ -14,7 +14,7 @@ from collections.abc import Callable, Sequence
 from typing import Any
 
 from robotmodel.bus import Context as BusContext
-from robotmodel.rcl import RosArgs, take_ros_args
+from robotmodel.rcl import RosArgs, apply_log_levels, take_ros_args
 from robotmodel.rclpy.exceptions import NotInitializedException
 
 __all__ = ["Context"]
@@ -41,6 +41,7 @@ class Context:
             words = list(sys.argv if args is None else args)
             self.argv = words
             self.ros_args, _rest = take_ros_args(words[1:] if words else [])
+            apply_log_levels(self.ros_args)
             self._bus = BusContext(domain_id=domain_id, connect=connect, backend=backend)
             self._ok = True
 

@@ -13,7 +13,7 @@ import time
 from enum import IntEnum
 from typing import Any
 
-from robotmodel.rcl import log_line
+from robotmodel.rcl import effective_level, log_line, set_log_level
 
 __all__ = ["LoggingSeverity", "RcutilsLogger", "get_logger", "get_logging_severity_from_string"]
 
@@ -31,8 +31,6 @@ class LoggingSeverity(IntEnum):
 
 _NAMES = {LoggingSeverity.DEBUG: "DEBUG", LoggingSeverity.INFO: "INFO", LoggingSeverity.WARN: "WARN",
           LoggingSeverity.ERROR: "ERROR", LoggingSeverity.FATAL: "FATAL"}
-_levels: dict[str, LoggingSeverity] = {}
-_default_level = LoggingSeverity.INFO
 _lock = threading.Lock()
 
 
@@ -44,8 +42,7 @@ def get_logging_severity_from_string(text: str) -> LoggingSeverity:
 
 def set_default_level(level: LoggingSeverity | str) -> None:
     """The level of every logger not given one (``--log-level``)."""
-    global _default_level
-    _default_level = get_logging_severity_from_string(level) if isinstance(level, str) else LoggingSeverity(level)
+    set_log_level("", get_logging_severity_from_string(level) if isinstance(level, str) else LoggingSeverity(level))
 
 
 class RcutilsLogger:
@@ -60,20 +57,12 @@ class RcutilsLogger:
         return RcutilsLogger(f"{self.name}.{name}" if self.name else name)
 
     def set_level(self, level: LoggingSeverity | int) -> None:
-        """Set the level of this logger."""
-        with _lock:
-            _levels[self.name] = LoggingSeverity(level)
+        """Set the level of this logger (``--log-level NAME:=LEVEL`` sets it too)."""
+        set_log_level(self.name, LoggingSeverity(level))
 
     def get_effective_level(self) -> LoggingSeverity:
         """The level in force: its own, else its nearest ancestor's, else the default."""
-        name = self.name
-        with _lock:
-            while name:
-                level = _levels.get(name)
-                if level is not None and level != LoggingSeverity.UNSET:
-                    return level
-                name = name.rpartition(".")[0]
-        return _default_level
+        return LoggingSeverity(effective_level(self.name))
 
     def is_enabled_for(self, severity: LoggingSeverity | int) -> bool:
         """Whether a message of ``severity`` would print."""
