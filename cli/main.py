@@ -48,6 +48,7 @@ COMMAND_MODULES: tuple[str, ...] = (
     "robotmodel.cli.param_cmd",
     "robotmodel.cli.router_cmd",
     "robotmodel.cli.launch_cmd",
+    "robotmodel.cli.run_cmd",
 )
 
 

@@ -20,12 +20,15 @@ reader by the file's suffix (``show_args``: ``ros2 launch --show-args``).
   them together on SIGINT/SIGTERM, reap them all.
 - :func:`find_launch_file`: ``PKG FILE`` to a path, as ``roslaunch``/``ros2 launch`` do.
 - :func:`run_launch`: all of it, as ``robotmodel launch`` runs it (``--dry-run`` too).
+- :func:`standin_command`: the robotmodel command standing in for a ``ros2 run``/``rosrun``
+  ``PACKAGE EXECUTABLE`` pair (:data:`STANDINS`, the table the launcher's node kinds use too).
 
 Bad input raises :class:`robotmodel.errors.LaunchError` starting with ``FILE:LINE:``.
 """
 
 from __future__ import annotations
 
+from robotmodel.launch._executables import STANDINS, standin_command
 from robotmodel.launch._files import load_launch_file
 from robotmodel.launch._find import find_launch_file
 from robotmodel.launch._kinds import build_plan
@@ -34,6 +37,7 @@ from robotmodel.launch._model import Dialect, LaunchPlan, NodeDecl, Param, Proce
 from robotmodel.launch._run import run_launch, run_processes
 
 __all__ = [
+    "STANDINS",
     "Dialect",
     "LaunchFile",
     "LaunchPlan",
@@ -46,4 +50,5 @@ __all__ = [
     "load_launch_file",
     "run_launch",
     "run_processes",
+    "standin_command",
 ]

@@ -32,17 +32,14 @@ from pathlib import Path
 import yaml
 
 from robotmodel.errors import LaunchError
+from robotmodel.launch._executables import JSP, JSP_GUI, RSP, RVIZ, STATIC
 from robotmodel.launch._loader import LaunchFile, join_ns
 from robotmodel.launch._model import Dialect, LaunchPlan, NodeDecl, Param, ProcessSpec
 from robotmodel.launch._rosargs import ros_tail
 
 __all__ = ["build_plan"]
 
-_RSP = {("robot_state_publisher", "robot_state_publisher"), ("robot_state_publisher", "state_publisher")}
-_JSP = {("joint_state_publisher", "joint_state_publisher")}
-_JSP_GUI = {("joint_state_publisher_gui", "joint_state_publisher_gui")}
-_STATIC = {("tf", "static_transform_publisher"), ("tf2_ros", "static_transform_publisher")}
-_RVIZ = {("rviz", "rviz"), ("rviz2", "rviz2")}
+_RSP, _JSP, _JSP_GUI, _STATIC, _RVIZ = RSP, JSP, JSP_GUI, STATIC, RVIZ
 _JSP_PARAMS = frozenset({"use_gui", "rate", "zeros", "source_list"})
 
 
