@@ -17,6 +17,12 @@ def register_verbs(verbs: Any) -> None:
     hz.add_argument("topic_name", help="name of the ROS topic to listen to (e.g. '/chatter')")
     hz.add_argument("--window", "-w", type=int, default=10000, metavar="WINDOW",
                     help="window size, in # of messages, for calculating rate (default: 10000)")
+    hz.add_argument("--filter", dest="filter_expr", default=None, metavar="EXPR",
+                    help="only measure messages matching the specified Python expression (on m, the message)")
+    hz.add_argument("--wall-time", dest="use_wtime", action="store_true",
+                    help="calculates rate using wall time which can be helpful when clock is not published "
+                         "during simulation")
+    hz.add_argument("-s", "--use-sim-time", action="store_true", help="enable ROS simulation time (/clock)")
     hz.add_argument("--timeout", type=float, metavar="N", default=None, help="stop after N seconds")
     add_bus_options(hz)
     hz.set_defaults(func=run_hz)
@@ -70,7 +76,8 @@ def run_hz(args: argparse.Namespace) -> int:
     """Print the rate."""
     from robotmodel.topic import run_topic_hz
 
-    return run_topic_hz(args.topic_name, window=args.window, connect=args.connect, spin_time=args.spin_time,
+    return run_topic_hz(args.topic_name, window=args.window, filter_expr=args.filter_expr, wall_time=args.use_wtime,
+                        use_sim_time=args.use_sim_time, connect=args.connect, spin_time=args.spin_time,
                         timeout=args.timeout)
 
 
