@@ -7,16 +7,22 @@ as ros2's ``set_message_fields`` raises.
 
 from __future__ import annotations
 
+import sys
 import time
 from collections.abc import Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from robotmodel.errors import BusError
+
+if TYPE_CHECKING:
+    from robotmodel.bus import QoS
 
 __all__ = ["message_from_yaml", "run_topic_pub"]
 
 # rostopic pub -1 latches its message for this long before it exits.
 _ROS1_LATCH_S = 3.0
+# ros2 topic pub checks for matching subscriptions this often (and says so every tenth time).
+_WAIT_STEP_S = 0.1
 
 
 def _kind(desc: Any) -> str:
@@ -98,34 +104,53 @@ def _repr(msg: Any) -> str:
     return f"{pkg}.msg.{name}({inner})"
 
 
+def _wait_for_subscriptions(pub: Any, wait: int, max_wait_time: float | None, stop: Any) -> None:
+    """ros2's wait: a line each second, a check each 0.1 s; BusError with its text past ``max_wait_time``."""
+    waited, checks = 0.0, 0
+    while not stop.is_set() and not pub.wait_for_subscriptions(wait, 0.0):
+        if checks % 10 == 0:
+            print(f"Waiting for at least {wait} matching subscription(s)...", flush=True)
+        if max_wait_time is not None and max_wait_time <= waited:
+            raise BusError(f"Timed out waiting for subscribers: Expected {wait} subcribers but only got "
+                           f"{pub.get_subscription_count()} subscribers")
+        checks += 1
+        stop.wait(_WAIT_STEP_S)
+        waited += _WAIT_STEP_S
+
+
 def run_topic_pub(topic_name: str, message_type: str, values: str = "", *, rate: float = 1.0, once: bool = False,
                   times: int = 0, wait_matching_subscriptions: int | None = None, keep_alive: float = 0.1,
-                  print_nth: int = 1, connect: Sequence[str] = ()) -> int:
+                  print_nth: int = 1, qos: QoS | None = None, max_wait_time_secs: float | None = None,
+                  node_name: str | None = None, stdin: bool = False, connect: Sequence[str] = ()) -> int:
     """``ros2 topic pub``: publish until stopped, ``once`` or ``times`` messages, at ``rate`` Hz; the exit code.
 
     With ``once`` or ``times`` it first waits for one matching subscription (ros2's
     ``-w`` default then), and stays ``keep_alive`` s after the last message so it gets out.
+    ``qos`` is the publisher's (:func:`robotmodel.topic.qos_from_short_keys` reads ros2's
+    ``--qos-*``; default ros2's ``default`` profile, which on ROS 1 with ``once``/``times``
+    latches, as ``rostopic pub -1``). ``stdin`` reads the YAML from standard input.
     """
-    from robotmodel.bus import Node
+    from robotmodel.bus import QOS_DEFAULT, QOS_LATCHED, Node
     from robotmodel.signals import stop_on_signals
 
+    if stdin:
+        values = sys.stdin.read()
     msg = message_from_yaml(message_type, values)
     count = 1 if once else times
     wait = wait_matching_subscriptions if wait_matching_subscriptions is not None else (1 if count else 0)
     if rate <= 0:
         raise BusError(f"rate must be greater than zero, got {rate}")
+    if wait == 0 and max_wait_time_secs is not None:
+        raise BusError("--max-wait-time-secs option is only effective with --wait-matching-subscriptions, "
+                       "--once or --times")
+    qos = QOS_DEFAULT if qos is None else qos
     stop = stop_on_signals()
-    with Node("_robotmodel_topic_pub", connect=list(connect)) as node:
-        qos: Any = 10
-        if count and node.context.encoding == "ros1":
-            from robotmodel.bus import QOS_LATCHED
-
+    with Node(node_name or "_robotmodel_topic_pub", connect=list(connect)) as node:
+        if count and node.context.encoding == "ros1" and qos == QOS_DEFAULT:
             qos, keep_alive = QOS_LATCHED, max(keep_alive, _ROS1_LATCH_S)
         pub = node.create_publisher(type(msg), topic_name, qos)
         if wait:
-            print(f"Waiting for at least {wait} matching subscription(s)...", flush=True)
-            while not stop.is_set() and not pub.wait_for_subscriptions(wait, 0.1):
-                pass
+            _wait_for_subscriptions(pub, wait, max_wait_time_secs, stop)
         print("publisher: beginning loop", flush=True)
         period_ns = int(1e9 / rate)
         deadline = time.monotonic_ns()

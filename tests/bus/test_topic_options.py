@@ -83,3 +83,30 @@ def test_hz_filter_errors_name_the_expression(procs: Any, bus_wire: str) -> None
     assert bad.popen.wait(DEADLINE_S) == 1
     bad.wait_for(lambda _: False, 0.1)
     assert bad.errors == ["robotmodel topic: error: --filter 'm.data ==' is not a Python expression: invalid syntax"], bad.errors
+
+
+def test_pub_qos_options_node_name_and_stdin_show_in_topic_info(procs: Any, bus_wire: str) -> None:
+    assert bus_wire == "zenoh"
+    pub = procs.cli("topic", "pub", "--stdin", "-r", "5", "-n", "qos_talker", "--qos-profile", "sensor_data",
+                    "--qos-depth", "3", "--qos-durability", "transient_local", "/qos_probe", "std_msgs/msg/String")
+    assert pub.popen.stdin is not None
+    pub.popen.stdin.write("data: piped\n")
+    pub.popen.stdin.close()
+    assert pub.wait_for(lambda ls: "publishing #1: std_msgs.msg.String(data='piped')" in ls, DEADLINE_S), pub.errors
+    info = procs.cli("topic", "info", "-v", "/qos_probe", "--spin-time", "1")
+    assert info.popen.wait(DEADLINE_S) == 0, info.errors
+    info.wait_for(lambda _: False, 0.1)
+    # sensor_data is rclpy's best effort, keep last 5; depth and durability overridden.
+    for line in ("Node name: qos_talker", "  Reliability: BEST_EFFORT", "  History (Depth): KEEP_LAST (3)",
+                 "  Durability: TRANSIENT_LOCAL"):
+        assert line in info.lines, info.lines
+
+
+def test_pub_max_wait_time_gives_up_with_ros2s_words(procs: Any, bus_wire: str) -> None:
+    assert bus_wire == "zenoh"
+    pub = procs.cli("topic", "pub", "-1", "--max-wait-time-secs", "0.3", "/nobody_listens", "std_msgs/msg/String")
+    assert pub.popen.wait(DEADLINE_S) == 1
+    pub.wait_for(lambda _: False, 0.1)
+    assert pub.lines == ["Waiting for at least 1 matching subscription(s)..."], pub.lines
+    assert pub.errors == ["robotmodel topic: error: Timed out waiting for subscribers: Expected 1 subcribers but "
+                          "only got 0 subscribers"], pub.errors
