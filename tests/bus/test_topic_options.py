@@ -110,3 +110,20 @@ def test_pub_max_wait_time_gives_up_with_ros2s_words(procs: Any, bus_wire: str) 
     assert pub.lines == ["Waiting for at least 1 matching subscription(s)..."], pub.lines
     assert pub.errors == ["robotmodel topic: error: Timed out waiting for subscribers: Expected 1 subcribers but "
                           "only got 0 subscribers"], pub.errors
+
+
+def test_pub_yaml_header_auto_and_time_now_are_stamped() -> None:
+    from robotmodel.msgs._dynamic import message_class
+    from robotmodel.topic import message_from_yaml
+
+    stamps: list[Any] = []
+    msg = message_from_yaml("geometry_msgs/msg/PoseStamped", "{header: auto, pose: {position: {x: 1.5}}}", stamps)
+    assert (msg.header.stamp.sec, msg.header.frame_id, msg.pose.position.x) == (0, "", 1.5)
+    (setter,) = stamps  # topic pub calls it with the time of each publication
+    setter(message_class("builtin_interfaces/msg/Time")(sec=7, nanosec=8))
+    assert (msg.header.stamp.sec, msg.header.stamp.nanosec) == (7, 8)
+    before = time.time_ns()
+    header = message_from_yaml("std_msgs/msg/Header", "{stamp: now, frame_id: map}")  # no list: stamped once, now
+    after = time.time_ns()
+    assert before <= header.stamp.sec * 1_000_000_000 + header.stamp.nanosec <= after
+    assert header.frame_id == "map"
