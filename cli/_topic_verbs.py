@@ -6,6 +6,7 @@ import argparse
 from typing import Any
 
 from robotmodel.cli._bus_args import add_bus_options
+from robotmodel.cli._qos_args import add_qos_arguments, qos_of
 
 __all__ = ["register_verbs"]
 
@@ -17,6 +18,12 @@ def register_verbs(verbs: Any) -> None:
     hz.add_argument("topic_name", help="name of the ROS topic to listen to (e.g. '/chatter')")
     hz.add_argument("--window", "-w", type=int, default=10000, metavar="WINDOW",
                     help="window size, in # of messages, for calculating rate (default: 10000)")
+    hz.add_argument("--filter", dest="filter_expr", default=None, metavar="EXPR",
+                    help="only measure messages matching the specified Python expression (on m, the message)")
+    hz.add_argument("--wall-time", dest="use_wtime", action="store_true",
+                    help="calculates rate using wall time which can be helpful when clock is not published "
+                         "during simulation")
+    hz.add_argument("-s", "--use-sim-time", action="store_true", help="enable ROS simulation time (/clock)")
     hz.add_argument("--timeout", type=float, metavar="N", default=None, help="stop after N seconds")
     add_bus_options(hz)
     hz.set_defaults(func=run_hz)
@@ -47,20 +54,28 @@ def register_verbs(verbs: Any) -> None:
     pub = verbs.add_parser("pub", help="publish a message to a topic", description="Publish a message to a topic.")
     pub.add_argument("topic_name", help="name of the ROS topic to publish to (e.g. '/chatter')")
     pub.add_argument("message_type", help="type of the ROS message (e.g. 'std_msgs/msg/String')")
-    pub.add_argument("values", nargs="?", default="",
-                     help="values to fill the message with in YAML format (e.g. 'data: Hello World')")
+    source = pub.add_mutually_exclusive_group()
+    source.add_argument("values", nargs="?", default="{}",
+                        help="values to fill the message with in YAML format (e.g. 'data: Hello World'), "
+                             "otherwise the message will be published with default values")
+    source.add_argument("--stdin", action="store_true", help="read values from standard input")
     pub.add_argument("-r", "--rate", type=float, default=1.0, metavar="N",
                      help="publishing rate in Hz (default: 1)")
     pub.add_argument("-p", "--print", type=int, default=1, metavar="N", dest="print_nth",
                      help="only print every N-th published message (default: 1, 0: never)")
-    pub.add_argument("-1", "--once", action="store_true", help="publish one message and exit")
-    pub.add_argument("-t", "--times", type=int, default=0, metavar="TIMES",
-                     help="publish this number of times and then exit")
+    count = pub.add_mutually_exclusive_group()
+    count.add_argument("-1", "--once", action="store_true", help="publish one message and exit")
+    count.add_argument("-t", "--times", type=int, default=0, metavar="TIMES",
+                       help="publish this number of times and then exit")
     pub.add_argument("-w", "--wait-matching-subscriptions", type=int, default=None, metavar="N",
                      help="wait until finding the specified number of matching subscriptions "
                           "(default 1 with --once or --times, else 0)")
+    pub.add_argument("--max-wait-time-secs", type=float, default=None, metavar="S",
+                     help="the maximum wait time in seconds with --wait-matching-subscriptions (default: endless)")
     pub.add_argument("--keep-alive", type=float, default=0.1, metavar="N",
                      help="keep publishing node alive for N seconds after the last message (default: 0.1)")
+    pub.add_argument("-n", "--node-name", default=None, help="name of the created publishing node")
+    add_qos_arguments(pub, "publish", "default")
     pub.add_argument("--connect", action="append", default=[], metavar="ENDPOINT",
                      help="zenoh endpoint to connect to instead of the local rendezvous (repeatable)")
     pub.set_defaults(func=run_pub)
@@ -70,7 +85,8 @@ def run_hz(args: argparse.Namespace) -> int:
     """Print the rate."""
     from robotmodel.topic import run_topic_hz
 
-    return run_topic_hz(args.topic_name, window=args.window, connect=args.connect, spin_time=args.spin_time,
+    return run_topic_hz(args.topic_name, window=args.window, filter_expr=args.filter_expr, wall_time=args.use_wtime,
+                        use_sim_time=args.use_sim_time, connect=args.connect, spin_time=args.spin_time,
                         timeout=args.timeout)
 
 
@@ -102,4 +118,6 @@ def run_pub(args: argparse.Namespace) -> int:
 
     return run_topic_pub(args.topic_name, args.message_type, args.values, rate=args.rate, once=args.once,
                          times=args.times, wait_matching_subscriptions=args.wait_matching_subscriptions,
-                         keep_alive=args.keep_alive, print_nth=args.print_nth, connect=args.connect)
+                         keep_alive=args.keep_alive, print_nth=args.print_nth, qos=qos_of(args),
+                         max_wait_time_secs=args.max_wait_time_secs, node_name=args.node_name, stdin=args.stdin,
+                         connect=args.connect)

@@ -16,7 +16,7 @@ from robotmodel.cli.record_cmd import add_record_arguments
 if TYPE_CHECKING:
     from robotmodel.recording import PlayOptions
 
-__all__ = ["play_options", "register"]
+__all__ = ["play_options", "positive_float", "register"]
 
 _DEFAULT = "default"  # --clock without HZ
 
@@ -24,6 +24,14 @@ _DEFAULT = "default"  # --clock without HZ
 def _hz(text: str) -> float | str:
     """--clock's HZ as a float; the no-value marker as it is (argparse passes a string const through type)."""
     return text if text == _DEFAULT else float(text)
+
+
+def positive_float(text: str) -> float:
+    """rosbag2's ``-d``'s type: a float above 0 (argparse names this function in its error)."""
+    value = float(text)
+    if value <= 0:
+        raise ValueError(f"Value {value} is less than or equal to zero.")
+    return value
 
 
 def register(sub: Any) -> None:
@@ -59,6 +67,11 @@ def register(sub: Any) -> None:
                       metavar="SECONDS", help="start this many seconds into the recording")
     play.add_argument("--topics", nargs="+", default=[], metavar="TOPIC",
                       help="play only these topics (default: all)")
+    play.add_argument("--remap", "-m", nargs="+", default=[], metavar="OLD:=NEW",
+                      help="list of topics to be remapped: in the form \"old_topic1:=new_topic1 "
+                           "old_topic2:=new_topic2 etc.\"")
+    play.add_argument("-d", "--delay", type=positive_float, default=0.0, metavar="SECONDS",
+                      help="sleep duration before play (each loop), in seconds")
     play.add_argument("--connect", action="append", default=[], metavar="ENDPOINT",
                       help="zenoh endpoint to connect to (repeatable)")
     play.set_defaults(func=_play)
@@ -72,7 +85,8 @@ def play_options(args: argparse.Namespace) -> PlayOptions:
     if args.hz is not None and clock is not None:
         clock = args.hz
     return PlayOptions(rate=args.rate, loop=args.loop, start_offset_ns=round(args.start_offset * 1e9),
-                       topics=parse_topics(args.topics), clock_hz=clock)
+                       topics=parse_topics(args.topics), clock_hz=clock, delay_ns=round(args.delay * 1e9),
+                       remaps=tuple(args.remap))
 
 
 def _play(args: argparse.Namespace) -> int:

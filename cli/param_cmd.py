@@ -1,8 +1,9 @@
-"""``robotmodel param list|get|set|dump``: node parameters, as ``ros2 param`` (``rosparam`` an alias).
+"""``robotmodel param list|get|set|dump|delete|describe|load``: node parameters, as ``ros2 param`` (``rosparam`` too).
 
 ROS 2's forms take a node and a name (``param get /robot_state_publisher publish_frequency``);
 ROS 1's take one parameter server key (``rosparam get /robot_state_publisher/publish_frequency``).
-The programs are :mod:`robotmodel.graphtools`'s ``run_param_*``.
+The programs are :mod:`robotmodel.graphtools`'s ``run_param_*``; delete, describe and load
+are in :mod:`._param_verbs`.
 """
 
 from __future__ import annotations
@@ -11,6 +12,7 @@ import argparse
 from typing import Any
 
 from robotmodel.cli._bus_args import add_bus_options
+from robotmodel.cli._param_verbs import register_verbs
 
 __all__ = ["register"]
 
@@ -18,7 +20,8 @@ __all__ = ["register"]
 def register(sub: Any) -> None:
     """Add the ``param`` subcommand with its verbs."""
     parser: argparse.ArgumentParser = sub.add_parser(
-        "param", aliases=["rosparam"], help="list, get, set or dump node parameters (as ros2 param / rosparam)",
+        "param", aliases=["rosparam"],
+        help="list, get, set, dump, delete, describe or load node parameters (as ros2 param / rosparam)",
         description="Node parameters: through ROS 2's parameter services, or ROS 1's parameter server.")
     verbs = parser.add_subparsers(dest="verb", metavar="VERB")
     verbs.required = True
@@ -44,6 +47,7 @@ def register(sub: Any) -> None:
     dump.add_argument("node_name", help="name of the ROS node")
     add_bus_options(dump)
     dump.set_defaults(func=run_dump)
+    register_verbs(verbs)
 
 
 def run_list(args: argparse.Namespace) -> int:

@@ -8,7 +8,9 @@ winning over the declared default; a statically typed parameter keeps its type (
 another type is refused with rclcpp's "Wrong parameter type" reason); read-only ones refuse
 every set after declaration; descriptors' integer and floating-point ranges are enforced;
 pre-set callbacks may change the list, on-set callbacks may refuse it (all of it: sets are
-atomic per call), post-set callbacks see what was set.
+atomic per call), post-set callbacks see what was set. Setting a parameter to NOT_SET
+undeclares it (``ros2 param delete``) where its typing is dynamic; a statically typed one
+refuses with rclpy's (or rclcpp's wrong-type) reason.
 """
 
 from __future__ import annotations
@@ -80,7 +82,7 @@ class ParameterTable:
         reason = self._check_one(param, descriptor, declaring=True)
         if reason:
             raise InvalidParameterValueException(name, value, reason)
-        result = self._apply([param], {name: descriptor})
+        result = self._apply([param], {name: descriptor}, declaring=True)
         if not result.successful:
             raise InvalidParameterValueException(name, value, result.reason)
         return param
@@ -164,9 +166,10 @@ class ParameterTable:
         unset = param.type_ == Parameter.Type.NOT_SET
         if descriptor.dynamic_typing:
             descriptor.type = int(param.type_)
-        elif unset and not declaring and self.has(param.name):
+        elif unset and not declaring and self.has(param.name) and not self.rclcpp:
             return "Static parameter cannot be undeclared"
-        elif not unset and int(param.type_) != descriptor.type:
+        # rclcpp has no undeclare rule of its own: NOT_SET is just another wrong type there.
+        elif (not unset or (self.rclcpp and not declaring)) and int(param.type_) != descriptor.type:
             if self.rclcpp:
                 return (f"Wrong parameter type, parameter {{{param.name}}} is of type "
                         f"{{{_RCLCPP_TYPES[descriptor.type]}}}, setting it to "
@@ -180,7 +183,7 @@ class ParameterTable:
             return _float_range(param.name, value, descriptor.floating_point_range[0])
         return ""
 
-    def _apply(self, params: list[Parameter], descriptors: Mapping[str, Any]) -> Any:
+    def _apply(self, params: list[Parameter], descriptors: Mapping[str, Any], declaring: bool = False) -> Any:
         with self._lock:
             pre, on_set, post = list(self._pre_set), list(self._on_set), list(self._post_set)
         for pre_hook in pre:
@@ -191,6 +194,11 @@ class ParameterTable:
                 return result
         with self._lock:
             for param in params:
+                if param.type_ == Parameter.Type.NOT_SET and not declaring:
+                    # A set to NOT_SET undeclares, as rclpy and rclcpp do (ros2 param delete).
+                    self._params.pop(param.name, None)
+                    self._descriptors.pop(param.name, None)
+                    continue
                 self._params[param.name] = param
                 if param.name in descriptors:
                     self._descriptors[param.name] = descriptors[param.name]

@@ -42,7 +42,10 @@ class PlayOptions:
     """How to play a recording; invalid values raise :class:`RecordingError`.
 
     ``rate`` (1.0 is real time), ``loop``, ``start_offset_ns`` into the recording,
-    ``topics`` (empty: all), ``clock_hz`` (None: no /clock).
+    ``topics`` (empty: all, by their recorded names), ``clock_hz`` (None: no /clock),
+    ``delay_ns`` slept before each pass (rosbag2's ``--delay``), ``remaps``: ROS 2 remap rules
+    (``/tf:=/replayed/tf``) for the player node, as rosbag2 hands ``--remap`` to it, so they
+    rename what is published (/clock included).
     """
 
     rate: float = 1.0
@@ -50,6 +53,8 @@ class PlayOptions:
     start_offset_ns: int = 0
     topics: tuple[str, ...] = ()
     clock_hz: float | None = None
+    delay_ns: int = 0
+    remaps: tuple[str, ...] = ()
 
     def __post_init__(self) -> None:
         if not 0 < self.rate < float("inf"):
@@ -58,6 +63,14 @@ class PlayOptions:
             raise RecordingError(f"start offset must be >= 0, got {self.start_offset_ns / 1e9} s")
         if self.clock_hz is not None and not 0 < self.clock_hz < float("inf"):
             raise RecordingError(f"clock rate must be a positive number of Hz, got {self.clock_hz}")
+        if self.delay_ns < 0:
+            raise RecordingError(f"delay must be >= 0, got {self.delay_ns / 1e9} s")
+        from robotmodel.bus._remap import rule_problem
+
+        for rule in self.remaps:
+            problem = rule_problem(rule)
+            if problem:
+                raise RecordingError(f"--remap {rule!r}: {problem}")
 
 
 class Player:
@@ -120,9 +133,15 @@ class Player:
         return None
 
     def play(self, stop: threading.Event) -> None:
-        """Play until the end (every pass with ``loop``) or ``stop``."""
+        """Play until the end (every pass with ``loop``, each after ``delay_ns``) or ``stop``."""
         first = self.recording.start_ns + self.options.start_offset_ns
         while not stop.is_set():
+            if self.options.delay_ns:
+                from robotmodel.rcl import ros_log
+
+                ros_log("INFO", _NODE, f"Sleep {self.options.delay_ns} ns")
+                if stop.wait(self.options.delay_ns / 1e9):
+                    return
             self._pass(first, stop)
             if not self.options.loop:
                 return
@@ -199,7 +218,7 @@ def run_bag_play(bag: str, options: PlayOptions, *, connect: Sequence[str] = ())
     from robotmodel.signals import stop_on_signals
 
     stop = stop_on_signals()
-    with Recording(bag) as rec, Node(_NODE, connect=list(connect)) as node:
+    with Recording(bag) as rec, Node(_NODE, connect=list(connect), remappings=options.remaps) as node:
         player = Player(rec, node, options)
         ros_log("INFO", _NODE, f"Playing '{bag}': {len(player.topics)} topic(s) at rate {options.rate:g}"
                 + (f", /clock at {options.clock_hz:g} Hz" if options.clock_hz is not None else ""))

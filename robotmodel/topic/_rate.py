@@ -1,8 +1,8 @@
-"""``ros2 topic hz`` and ``ros2 topic bw``: a topic's message rate and bandwidth, printed once a second.
+"""``ros2 topic bw`` (a topic's bandwidth, printed once a second) and the rate arithmetic ``topic hz`` prints.
 
-Both subscribe raw (no decoding, so any type is measured) and keep the last ``window``
-arrivals, as ros2cli's ``ROSTopicHz``/``ROSTopicBandwidth`` do; times are the receiver's
-monotonic clock in integer nanoseconds.
+bw subscribes raw (no decoding, so any type is measured) and keeps the last ``window``
+arrivals, as ros2cli's ``ROSTopicBandwidth`` does; times are the receiver's monotonic
+clock in integer nanoseconds. ``topic hz`` itself is :mod:`._hz`.
 """
 
 from __future__ import annotations
@@ -15,7 +15,7 @@ from collections.abc import Sequence
 from time import monotonic_ns
 from typing import Any, NamedTuple
 
-__all__ = ["DEFAULT_WINDOW", "RateStats", "rate_stats", "run_topic_bw", "run_topic_hz"]
+__all__ = ["DEFAULT_WINDOW", "RateStats", "gap_stats", "rate_stats", "run_topic_bw"]
 
 #: ros2 topic hz's default window (messages); bw's is 100.
 DEFAULT_WINDOW = 10000
@@ -23,7 +23,7 @@ _BW_WINDOW = 100
 
 
 class RateStats(NamedTuple):
-    """What ros2 topic hz prints: rate (Hz), min/max/std dev of the gaps (s), window (messages)."""
+    """What ros2 topic hz prints: rate (Hz), min/max/std dev of the gaps (s), window (the gaps counted, as ros2's)."""
 
     rate: float
     min_delta: float
@@ -39,12 +39,17 @@ class RateStats(NamedTuple):
 
 def rate_stats(arrivals_ns: Sequence[int]) -> RateStats | None:
     """Stats of arrival times (ns, increasing); None below two arrivals."""
-    if len(arrivals_ns) < 2:
+    return gap_stats([b - a for a, b in itertools.pairwise(arrivals_ns)])
+
+
+def gap_stats(gaps_ns: Sequence[int]) -> RateStats | None:
+    """Stats of the gaps between arrivals (ns), as ros2's ``ROSTopicHz.get_hz`` computes them; None when empty."""
+    if not gaps_ns:
         return None
-    deltas = [(b - a) / 1e9 for a, b in itertools.pairwise(arrivals_ns)]
+    deltas = [g / 1e9 for g in gaps_ns]
     mean = sum(deltas) / len(deltas)
     std = math.sqrt(sum((d - mean) ** 2 for d in deltas) / len(deltas))
-    return RateStats(1.0 / mean if mean > 0 else 0.0, min(deltas), max(deltas), std, len(deltas) + 1)
+    return RateStats(1.0 / mean if mean > 0 else 0.0, min(deltas), max(deltas), std, len(deltas))
 
 
 def _size(n: float) -> str:
@@ -85,16 +90,6 @@ def _watch(topic_name: str, window: int, connect: Sequence[str], spin_time: floa
             if timeout is not None and monotonic_ns() - report_start >= timeout * 1e9:
                 break
     return 0
-
-
-def run_topic_hz(topic_name: str, *, window: int = DEFAULT_WINDOW, connect: Sequence[str] = (),
-                 spin_time: float = 0.5, timeout: float | None = None) -> int:
-    """``ros2 topic hz``: print the average rate of ``topic_name`` once a second until stopped; the exit code."""
-    def report(seen: list[tuple[int, int]]) -> None:
-        stats = rate_stats([t for t, _ in seen])
-        print(stats.text() if stats is not None else "no new messages", flush=True)
-
-    return _watch(topic_name, window, connect, spin_time, timeout, report, "_robotmodel_topic_hz")
 
 
 def run_topic_bw(topic_name: str, *, window: int = _BW_WINDOW, connect: Sequence[str] = (),

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import subprocess
 import sys
+from pathlib import Path
 
 import yaml
 from ros1helpers import Ros1World
@@ -39,3 +40,26 @@ def test_param_get_set_against_the_real_parameter_server(ros1: Ros1World) -> Non
     assert ros1.tool("rosparam", "get", "/probe/on").strip() == "true"
     listed = _robotmodel(ros1, "param", "list", "/probe").stdout.splitlines()
     assert listed == ["/probe:", "  gain", "  names", "  on"]
+
+
+def test_rosparam_load_delete_describe_against_the_real_rosparam(ros1: Ros1World, tmp_path: Path) -> None:
+    params = tmp_path / "params.yaml"
+    params.write_text("gain: 2.5\nnested: {a: 1, b: [x, y]}\n---\n_ns: sub\nflag: true\n")
+    ros1.tool("rosparam", "load", str(params), "/theirs")
+    loaded = _robotmodel(ros1, "rosparam", "load", str(params), "/ours")
+    assert (loaded.returncode, loaded.stdout) == (0, ""), loaded.stderr
+
+    def tree(ns: str) -> object:
+        return yaml.safe_load(ros1.tool("rosparam", "get", ns))
+
+    assert tree("/ours") == tree("/theirs")
+    assert _robotmodel(ros1, "rosparam", "delete", "/ours/nested/a").returncode == 0
+    ros1.tool("rosparam", "delete", "/theirs/nested/a")
+    assert tree("/ours") == tree("/theirs")
+    again = _robotmodel(ros1, "rosparam", "delete", "/ours/nested/a")
+    theirs = ros1.tool("rosparam", "delete", "/theirs/nested/a")
+    assert again.returncode == 1
+    assert again.stderr.split("error: ", 1)[1] == theirs.split("ERROR: ", 1)[1].replace("/theirs", "/ours")
+    described = _robotmodel(ros1, "param", "describe", "/ours", "gain", "sub/flag")
+    assert described.stdout.splitlines() == ["Parameter name: gain", "  Type: double", "  Constraints:",
+                                             "Parameter name: sub/flag", "  Type: boolean", "  Constraints:"]

@@ -66,6 +66,11 @@ def main():
     show(node.get_parameter("rate"))
     show(node.get_parameter("gains"))
     print([p.name for p in node.get_parameters(["rate", "flag"])])
+    # ros2 param delete: a set to NOT_SET, refused for a statically typed parameter, undeclaring a dynamic one.
+    attempt("delete static", lambda: node.set_parameters([Parameter("flag")]))
+    node.declare_parameter("loose", 1, ParameterDescriptor(dynamic_typing=True))
+    attempt("delete dynamic", lambda: node.set_parameters([Parameter("loose")]))
+    print("loose", node.has_parameter("loose"), "flag", node.has_parameter("flag"))
     node.get_logger().info("parameters done")
     node.destroy_node()
     rclpy.shutdown()

@@ -86,7 +86,7 @@ def test_parameters_behave_as_the_real_rclpy(tmp_path: Path) -> None:
     assert theirs.returncode == 0, theirs.stderr
     assert ours.returncode == 0, ours.stderr
     assert ours.stdout.splitlines() == theirs.stdout.splitlines()
-    assert len(ours.stdout.splitlines()) == 19
+    assert len(ours.stdout.splitlines()) == 22
     line = r"^\[INFO\] \[\d+\.\d{9}\] \[probe\]: parameters done$"
     assert re.search(line, theirs.stderr, re.M) and re.search(line, ours.stderr, re.M)
 
