@@ -36,7 +36,7 @@ from cyclonedds.topic import Topic
 from robotmodel.bus._backend import Entity, EntityKind, GraphCallback
 from robotmodel.bus._dds_qos import qos_from_dds, type_hash_of
 from robotmodel.bus._dds_raw import Pump, destroy, take_raw, write_raw
-from robotmodel.bus._dds_types import idl_type, ros_topic_name
+from robotmodel.bus._dds_types import CYCLONE_VENDOR, idl_type, ros_topic_name
 from robotmodel.bus._names import ros_type_name
 from robotmodel.bus._warn import Warner
 
@@ -70,6 +70,20 @@ class _Endpoint:
     qos: Any
 
 
+def _service_of(dds_topic: str, typename: str) -> tuple[EntityKind, str, str] | None:
+    """A reader of a service's DDS topic as rmw_dds_common's graph shows it: (kind, service, type), or None.
+
+    A reader of ``rq/<name>Request`` is a server of ``/<name>``, a reader of ``rr/<name>Reply``
+    a client; the type is the request's or reply's without its ``_Request`` or ``_Response``.
+    Writers are not counted: each server and client has one reader.
+    """
+    for prefix, suffix, type_suffix, kind in (("rq/", "Request", "_Request", EntityKind.SERVICE),
+                                              ("rr/", "Reply", "_Response", EntityKind.CLIENT)):
+        if dds_topic.startswith(prefix) and dds_topic.endswith(suffix) and typename.endswith(type_suffix):
+            return kind, dds_topic[len(prefix) - 1:-len(suffix)], typename[:-len(type_suffix)]
+    return None
+
+
 def _store() -> Any:
     from robotmodel.msgs import typestore
 
@@ -96,8 +110,11 @@ class DdsGraph:
         rqos = Qos(Policy.Reliability.Reliable(2**63 - 1), Policy.Durability.TransientLocal,
                    Policy.History.KeepLast(_BATCH))
         self._readers: list[Any] = []
+        self._foreign_info: set[bytes] = set()
+        self._renew = False
         self._pump = Pump("dds-graph", self._drain)
         topic = Topic(participant, DISCOVERY_TOPIC, idl_type(_INFO_TYPE))
+        self._info = (topic, rqos)
         self._writer = DataWriter(participant, topic, qos)
         listener = self._pump.listener()
         readers = [
@@ -173,8 +190,24 @@ class DdsGraph:
                 for sample in batch:
                     if sample.sample_info.instance_state != _ALIVE:
                         self._nodes.pop(sample.key.bytes, None)
+            if self._renew:
+                self._renew_info_reader()
             if changed:
                 self._emit()
+
+    def _renew_info_reader(self) -> None:
+        # Cyclone ignores a heartbeat from a writer it has not yet discovered, and a transient-local
+        # reader takes nothing from a non-Cyclone writer before that writer's first heartbeat: Fast DDS
+        # sends one when it matches a reader, often before its own announcement reaches us, and then
+        # only every 3 s. A reader made now that we know the writer gets that first heartbeat at once.
+        self._renew = False
+        old = self._readers[0]
+        while batch := take_raw(old):
+            for data, info in batch:
+                if info.valid_data:
+                    self._on_info(data)
+        self._readers[0] = DataReader(self._participant, self._info[0], self._info[1], listener=self._listener)
+        destroy(old)
 
     def _on_info(self, data: bytes) -> None:
         try:
@@ -192,13 +225,21 @@ class DdsGraph:
         key = sample.key.bytes
         if sample.sample_info.instance_state != _ALIVE:
             self._endpoints.pop(key, None)
+            self._foreign_info.discard(key)
             return
+        if (kind is EntityKind.PUBLISHER and sample.topic_name == DISCOVERY_TOPIC and key[:2] != CYCLONE_VENDOR
+                and key not in self._foreign_info):
+            self._foreign_info.add(key)
+            self._renew = True
+        typename = ros_type_name(sample.type_name)
         topic = ros_topic_name(sample.topic_name or "")
         if topic is None:
-            return
-        self._endpoints[key] = _Endpoint(kind, sample.participant_key.bytes, topic,
-                                         ros_type_name(sample.type_name), type_hash_of(sample.qos),
-                                         qos_from_dds(sample.qos))
+            service = _service_of(sample.topic_name or "", typename) if kind is EntityKind.SUBSCRIPTION else None
+            if service is None:
+                return
+            kind, topic, typename = service
+        self._endpoints[key] = _Endpoint(kind, sample.participant_key.bytes, topic, typename,
+                                         type_hash_of(sample.qos), qos_from_dds(sample.qos))
 
     def _current(self) -> dict[str, Entity]:
         entities: dict[str, Entity] = {}

@@ -66,7 +66,7 @@ from cyclonedds.sub import DataReader
 from robotmodel.bus._backend import ClientHandle, Handle, RequestCallback, RequestId, ResponseCallback, ServiceType
 from robotmodel.bus._dds_qos import qos_to_dds
 from robotmodel.bus._dds_raw import Pump, destroy, take_raw, write_raw
-from robotmodel.bus._dds_types import reply_topic_name, request_topic_name
+from robotmodel.bus._dds_types import CYCLONE_VENDOR, reply_topic_name, request_topic_name
 from robotmodel.bus._qos import QoS, Reliability
 from robotmodel.errors import BusError
 
@@ -103,8 +103,6 @@ def _client_id(gid: bytes) -> int:
     return int.from_bytes(gid[:8], "little") ^ int.from_bytes(gid[8:], "little")
 
 
-#: The vendor id Cyclone DDS puts at the start of its GUIDs (RTPS 2.5, 9.3.1.5: Eclipse 01.10).
-CYCLONE_VENDOR = b"\x01\x10"
 ForeignCallback = Callable[[bytes, bytes, int], None]
 
 

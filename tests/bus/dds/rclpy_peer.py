@@ -27,7 +27,8 @@ Roles:
   transient local, and prints ``event POLICY`` for each incompatible publisher rclpy reports.
 - ``params``: node ``rclpy_params`` declares parameters of several types, prints
   ``params {name: [type, value]}`` (JSON) of every parameter it lists, as its own
-  ``get_parameters`` reports them, and ``set [[name, value], ...]`` after each accepted set.
+  ``get_parameters`` reports them, ``services [[name, [type, ...]], ...]`` as its own graph lists
+  its service servers, and ``set [[name, value], ...]`` after each accepted set.
 """
 
 from __future__ import annotations
@@ -177,6 +178,7 @@ def main(argv: list[str]) -> int:
 
         names = node.list_parameters([], 0).names
         say("params", json.dumps({p.name: [p.type_.value, plain(p.value)] for p in node.get_parameters(names)}))
+        say("services", json.dumps(node.get_service_names_and_types_by_node(node.get_name(), node.get_namespace())))
         node.add_post_set_parameters_callback(
             lambda params: say("set", json.dumps([[p.name, plain(p.value)] for p in params])))
     else:
