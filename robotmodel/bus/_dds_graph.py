@@ -11,6 +11,16 @@ and joins the two into the seam's :class:`Entity` records. An endpoint no node c
 (yet) is shown as rmw shows it, with node ``_NODE_NAME_UNKNOWN_`` in
 ``_NODE_NAMESPACE_UNKNOWN_`` and no ``node_key``. A participant that leaves (or whose
 lease runs out when its process dies) takes its nodes along; Cyclone disposes its endpoints.
+A service is its endpoints on ``rq/<name>Request`` and ``rr/<name>Reply``; as rmw_dds_common
+demangles them, a reader of the first is a server of ``/<name>`` and a reader of the second a
+client, of the service type (the request's or reply's type without ``_Request``/``_Response``).
+
+Fast DDS sends a new reader of its ``ros_discovery_info`` its first heartbeat as soon as it
+matches it, often before its own announcement of that writer has reached us; Cyclone ignores a
+heartbeat from a writer it does not know yet, and a transient-local reader takes nothing from a
+non-Cyclone writer before a heartbeat, so the nodes of a Fast DDS participant would show only at
+its next one (every 3 s). When another vendor's discovery writer appears, the discovery reader is
+made anew, so that the writer, now known, heartbeats to it at once.
 
 GIDs are DDS GUIDs, 16 bytes (Jazzy's ``rmw_gid_t``; Fast DDS and Cyclone alike).
 Only the DDS wire uses this module (it is below the backend seam).
@@ -196,10 +206,7 @@ class DdsGraph:
                 self._emit()
 
     def _renew_info_reader(self) -> None:
-        # Cyclone ignores a heartbeat from a writer it has not yet discovered, and a transient-local
-        # reader takes nothing from a non-Cyclone writer before that writer's first heartbeat: Fast DDS
-        # sends one when it matches a reader, often before its own announcement reaches us, and then
-        # only every 3 s. A reader made now that we know the writer gets that first heartbeat at once.
+        # See the module docstring: a new reader gets a first heartbeat from a writer we now know.
         self._renew = False
         old = self._readers[0]
         while batch := take_raw(old):

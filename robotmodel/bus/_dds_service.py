@@ -177,12 +177,14 @@ class _Pair:
                         log.exception("service '%s' failed on a sample", self.name)
 
     def drop_reader(self) -> None:
-        """Delete the reader of rmw_cyclonedds' form (the bare one stays); a no-op when gone."""
+        """Delete the reader of rmw_cyclonedds' form; the bare one, announced in its place, stays."""
         with self._lock:
             reader, self._reader = self._reader, None
-        if reader is not None and self._open:
+            foreign = self._foreign
+        if reader is not None and foreign is not None and self._open:
             destroy(reader)
-            self._node.forget(self, self.reader_gid)  # type: ignore[arg-type]
+            self._node.replace_reader(self.reader_gid, foreign.guid.bytes)
+            self.reader_gid = foreign.guid.bytes
 
     def write(self, payload: bytes, bare: bool = False) -> None:
         """Write on the writer with rmw_cyclonedds' header, or (``bare``) on the bare-typed one."""
@@ -309,8 +311,12 @@ class DdsClient(ClientHandle):
                           (request_topic_name(name), stype.request.typename), self._on_data, stype.type_hash,
                           self._on_foreign, foreign_reliable=False)
         self._id = _client_id(self.pair.writer_gid)
-        self.reader_gid = self.pair.reader_gid
         self.writer_gid = self.pair.writer_gid
+
+    @property
+    def reader_gid(self) -> bytes:
+        """The GUID of the reply reader the node announces (the bare one once a Fast DDS server is called)."""
+        return self.pair.reader_gid
 
     @property
     def gid(self) -> bytes:

@@ -169,7 +169,7 @@ def main(argv: list[str]) -> int:
                                  event_callbacks=events)
     elif role == "params":
         node = Node("rclpy_params")
-        for name, value in (("rate", 12.5), ("count", 7), ("enabled", True), ("frame", "base_link"),
+        for name, value in (("rate", 12.5), ("id", 7), ("enabled", True), ("frame", "base_link"),
                             ("joints", ["shoulder", "elbow"]), ("gains", [0.5, 1.25]), ("ids", [3, 4])):
             node.declare_parameter(name, value)
 
