@@ -36,7 +36,8 @@ response, to every reply reader it has matched. The client therefore writes the 
 bare reply with its oldest request to that participant (the reply writer's GUID prefix is
 the server's): exact while nobody else calls that server at the same moment, as with one
 request at a time per client (ros2cli's tools, ``robotmodel param``); a concurrent caller's
-reply could be taken instead, which only the inline QoS would tell apart. The reply reader
+reply could be taken instead, which only the inline QoS would tell apart, and a reply lost on
+the way (it is read best effort) would shift the pairing of a client that goes on calling. The reply reader
 is best effort: Cyclone holds a reliable reader's first samples from a non-Cyclone writer
 until that writer's first heartbeat, then starts after the heartbeat's last sequence number
 (``handle_Heartbeat`` in ``ddsi_receive.c``), and Fast DDS sends a GAP and a HEARTBEAT that
