@@ -157,7 +157,7 @@ class DdsBackend(Backend):
         super().__init__(domain_id)
         self.participant = participant
         self.graph = DdsGraph(participant)
-        self._topics: dict[tuple[str, str], Any] = {}
+        self._topics: dict[tuple[str, str, bool], Any] = {}
         self._nodes: NodeBook[DdsNode] = NodeBook("DDS")
         self._lock = threading.RLock()
 
@@ -182,11 +182,11 @@ class DdsBackend(Backend):
 
     def dds_topic(self, dds_name: str, typename: str, request_header: bool = False) -> Any:
         """The DDS topic ``dds_name`` of a ROS type (with rmw_cyclonedds' request header: services)."""
+        key = (dds_name, typename, request_header)  # a service's two forms are two types of one name
         with self._lock:
-            found = self._topics.get((dds_name, typename))
+            found = self._topics.get(key)
             if found is None:
-                found = self._topics[(dds_name, typename)] = Topic(self.participant, dds_name,
-                                                                   idl_type(typename, request_header))
+                found = self._topics[key] = Topic(self.participant, dds_name, idl_type(typename, request_header))
             return found
 
     def create_node(self, name: str, namespace: str, enclave: str = "/") -> DdsNode:
@@ -291,6 +291,15 @@ class DdsNode(NodeHandle):
             self.record.writers.append(endpoint.writer_gid)
         self.backend.graph.publish()
         return cast(Handle, endpoint)
+
+    def replace_reader(self, old: bytes, new: bytes) -> None:
+        """A service's or client's reader replaced by another: announce the new one in its place."""
+        with self.backend.graph.lock:
+            readers = self.record.readers
+            if old in readers:
+                readers[readers.index(old)] = new
+        if not self._closed:
+            self.backend.graph.publish()
 
     def forget_pair(self, child: Handle, reader_gid: bytes, writer_gid: bytes) -> None:
         """A service or client closed: take its reader and writer out of the node's announcement."""

@@ -11,6 +11,16 @@ and joins the two into the seam's :class:`Entity` records. An endpoint no node c
 (yet) is shown as rmw shows it, with node ``_NODE_NAME_UNKNOWN_`` in
 ``_NODE_NAMESPACE_UNKNOWN_`` and no ``node_key``. A participant that leaves (or whose
 lease runs out when its process dies) takes its nodes along; Cyclone disposes its endpoints.
+A service is its endpoints on ``rq/<name>Request`` and ``rr/<name>Reply``; as rmw_dds_common
+demangles them, a reader of the first is a server of ``/<name>`` and a reader of the second a
+client, of the service type (the request's or reply's type without ``_Request``/``_Response``).
+
+Fast DDS sends a new reader of its ``ros_discovery_info`` its first heartbeat as soon as it
+matches it, often before its own announcement of that writer has reached us; Cyclone ignores a
+heartbeat from a writer it does not know yet, and a transient-local reader takes nothing from a
+non-Cyclone writer before a heartbeat, so the nodes of a Fast DDS participant would show only at
+its next one (every 3 s). When another vendor's discovery writer appears, the discovery reader is
+made anew, so that the writer, now known, heartbeats to it at once.
 
 GIDs are DDS GUIDs, 16 bytes (Jazzy's ``rmw_gid_t``; Fast DDS and Cyclone alike).
 Only the DDS wire uses this module (it is below the backend seam).
@@ -36,7 +46,7 @@ from cyclonedds.topic import Topic
 from robotmodel.bus._backend import Entity, EntityKind, GraphCallback
 from robotmodel.bus._dds_qos import qos_from_dds, type_hash_of
 from robotmodel.bus._dds_raw import Pump, destroy, take_raw, write_raw
-from robotmodel.bus._dds_types import idl_type, ros_topic_name
+from robotmodel.bus._dds_types import CYCLONE_VENDOR, idl_type, ros_topic_name
 from robotmodel.bus._names import ros_type_name
 from robotmodel.bus._warn import Warner
 
@@ -70,6 +80,20 @@ class _Endpoint:
     qos: Any
 
 
+def _service_of(dds_topic: str, typename: str) -> tuple[EntityKind, str, str] | None:
+    """A reader of a service's DDS topic as rmw_dds_common's graph shows it: (kind, service, type), or None.
+
+    A reader of ``rq/<name>Request`` is a server of ``/<name>``, a reader of ``rr/<name>Reply``
+    a client; the type is the request's or reply's without its ``_Request`` or ``_Response``.
+    Writers are not counted: each server and client has one reader.
+    """
+    for prefix, suffix, type_suffix, kind in (("rq/", "Request", "_Request", EntityKind.SERVICE),
+                                              ("rr/", "Reply", "_Response", EntityKind.CLIENT)):
+        if dds_topic.startswith(prefix) and dds_topic.endswith(suffix) and typename.endswith(type_suffix):
+            return kind, dds_topic[len(prefix) - 1:-len(suffix)], typename[:-len(type_suffix)]
+    return None
+
+
 def _store() -> Any:
     from robotmodel.msgs import typestore
 
@@ -96,8 +120,11 @@ class DdsGraph:
         rqos = Qos(Policy.Reliability.Reliable(2**63 - 1), Policy.Durability.TransientLocal,
                    Policy.History.KeepLast(_BATCH))
         self._readers: list[Any] = []
+        self._foreign_info: set[bytes] = set()
+        self._renew = False
         self._pump = Pump("dds-graph", self._drain)
         topic = Topic(participant, DISCOVERY_TOPIC, idl_type(_INFO_TYPE))
+        self._info = (topic, rqos)
         self._writer = DataWriter(participant, topic, qos)
         listener = self._pump.listener()
         readers = [
@@ -173,8 +200,21 @@ class DdsGraph:
                 for sample in batch:
                     if sample.sample_info.instance_state != _ALIVE:
                         self._nodes.pop(sample.key.bytes, None)
+            if self._renew:
+                self._renew_info_reader()
             if changed:
                 self._emit()
+
+    def _renew_info_reader(self) -> None:
+        # See the module docstring: a new reader gets a first heartbeat from a writer we now know.
+        self._renew = False
+        old = self._readers[0]
+        while batch := take_raw(old):
+            for data, info in batch:
+                if info.valid_data:
+                    self._on_info(data)
+        self._readers[0] = DataReader(self._participant, self._info[0], self._info[1], listener=self._listener)
+        destroy(old)
 
     def _on_info(self, data: bytes) -> None:
         try:
@@ -192,13 +232,21 @@ class DdsGraph:
         key = sample.key.bytes
         if sample.sample_info.instance_state != _ALIVE:
             self._endpoints.pop(key, None)
+            self._foreign_info.discard(key)
             return
+        if (kind is EntityKind.PUBLISHER and sample.topic_name == DISCOVERY_TOPIC and key[:2] != CYCLONE_VENDOR
+                and key not in self._foreign_info):
+            self._foreign_info.add(key)
+            self._renew = True
+        typename = ros_type_name(sample.type_name)
         topic = ros_topic_name(sample.topic_name or "")
         if topic is None:
-            return
-        self._endpoints[key] = _Endpoint(kind, sample.participant_key.bytes, topic,
-                                         ros_type_name(sample.type_name), type_hash_of(sample.qos),
-                                         qos_from_dds(sample.qos))
+            service = _service_of(sample.topic_name or "", typename) if kind is EntityKind.SUBSCRIPTION else None
+            if service is None:
+                return
+            kind, topic, typename = service
+        self._endpoints[key] = _Endpoint(kind, sample.participant_key.bytes, topic, typename,
+                                         type_hash_of(sample.qos), qos_from_dds(sample.qos))
 
     def _current(self) -> dict[str, Entity]:
         entities: dict[str, Entity] = {}

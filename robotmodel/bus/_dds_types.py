@@ -26,6 +26,7 @@ from robotmodel.bus._names import dds_type_name
 from robotmodel.errors import BusError
 
 __all__ = [
+    "CYCLONE_VENDOR",
     "TOPIC_PREFIX",
     "dds_topic_name",
     "idl_type",
@@ -34,6 +35,8 @@ __all__ = [
     "ros_topic_name",
 ]
 
+#: The vendor id Cyclone DDS puts at the start of its GUIDs (RTPS 2.5, 9.3.1.5: Eclipse 01.10).
+CYCLONE_VENDOR = b"\x01\x10"
 #: rmw's prefix for ROS topics on DDS (``rq``/``rr`` are services' request and reply).
 TOPIC_PREFIX = "rt"
 

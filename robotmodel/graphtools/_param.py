@@ -8,6 +8,7 @@ parameter server key and prints as rosparam does.
 
 from __future__ import annotations
 
+from array import array
 from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
 from typing import Any
@@ -149,17 +150,23 @@ def run_param_get(node_name: str, parameter_name: str | None = None, *, hide_typ
     if not got:
         raise BusError("Parameter not set")
     ptype, value = got[0]
-    value = _plain(value)
-    if hide_type:
-        print(value)
-    elif ptype == 0 and value is not None:  # ROS 1: the type follows the value
+    if ptype == 0 and value is not None:  # ROS 1: the type follows the value
+        value = _plain(value)
         word = {bool: 1, int: 2, float: 3, str: 4}.get(type(value), 0)
-        print(f"{_WORDS[word]}: {value}" if word else _ros1_text(value))
-    elif ptype == 0:
-        raise BusError("Parameter not set")
+        print(value if hide_type else f"{_WORDS[word]}: {value}" if word else _ros1_text(value))
+    elif ptype == 0:  # declared, no value: ros2param's label, and exit 0
+        print(None if hide_type else "Parameter not set.")
     else:
-        print(f"{_WORDS.get(ptype, 'Value is')}: {value}")
+        shown = _ros2_text(ptype, value)
+        print(shown if hide_type else f"{_WORDS.get(ptype, 'Value is')}: {shown}")
     return 0
+
+
+def _ros2_text(ptype: int, value: Any) -> str:
+    """A ROS 2 value as ros2param prints the message field: integer and double arrays are ``array.array``s."""
+    if ptype in (7, 8):
+        return repr(array("q" if ptype == 7 else "d", list(value)))
+    return str(_plain(value))
 
 
 def run_param_set(node_name: str, parameter_name: str, value: str | None = None, *, connect: Sequence[str] = (),

@@ -25,6 +25,11 @@ Roles:
   /joint_states, reliable and transient local, and prints ``event POLICY`` per incompatible publisher.
 - ``latched_listener``: node ``rclpy_tl`` subscribes std_msgs/String on /qos_probe, reliable and
   transient local, and prints ``event POLICY`` for each incompatible publisher rclpy reports.
+- ``params``: node ``rclpy_params`` declares parameters of several types, prints
+  ``params {name: [type, value]}`` (JSON) of every parameter it lists, as its own
+  ``get_parameters`` reports them, ``shown {name: text}`` of its array parameters as ros2param
+  prints them (the str of the ParameterValue field), ``services [[name, [type, ...]], ...]`` as its own graph lists
+  its service servers, and ``set [[name, value], ...]`` after each accepted set.
 """
 
 from __future__ import annotations
@@ -163,6 +168,24 @@ def main(argv: list[str]) -> int:
         events = SubscriptionEventCallbacks(incompatible_qos=lambda e: say("event", e.last_policy_kind.name))
         node.create_subscription(String, "/qos_probe", lambda m: say("got", json.dumps(m.data)), qos,
                                  event_callbacks=events)
+    elif role == "params":
+        node = Node("rclpy_params")
+        for name, value in (("rate", 12.5), ("id", 7), ("enabled", True), ("frame", "base_link"),
+                            ("joints", ["shoulder", "elbow"]), ("gains", [0.5, 1.25]), ("ids", [3, 4])):
+            node.declare_parameter(name, value)
+
+        def plain(value: object) -> object:
+            return value.tolist() if hasattr(value, "tolist") else list(value) if isinstance(value, tuple) else value
+
+        names = node.list_parameters([], 0).names
+        say("params", json.dumps({p.name: [p.type_.value, plain(p.value)] for p in node.get_parameters(names)}))
+        # Each value as ros2param prints it: the str of the ParameterValue message's field for its type.
+        fields = {6: "bool_array_value", 7: "integer_array_value", 8: "double_array_value", 9: "string_array_value"}
+        say("shown", json.dumps({p.name: str(getattr(p.get_parameter_value(), fields[p.type_.value]))
+                                 for p in node.get_parameters(names) if p.type_.value in fields}))
+        say("services", json.dumps(node.get_service_names_and_types_by_node(node.get_name(), node.get_namespace())))
+        node.add_post_set_parameters_callback(
+            lambda params: say("set", json.dumps([[p.name, plain(p.value)] for p in params])))
     else:
         raise SystemExit(f"unknown role {role}")
     say("ready")
