@@ -1,0 +1,81 @@
+"""view_frames and the viewer on the ROS 2 wires with ``--ros-args -p use_sim_time:=true``, from ``bag play --clock``.
+
+view_frames dates its tree (the legend's ``Recorded at time``) by the node's clock, as tf2_tools'
+does with ``node.get_clock().now()``: the recording's time under sim time. The viewer's TF buffer
+is cleared when /clock jumps back, as rviz's tf2_ros buffer with the node's clock is, so a looping
+replay is drawn again from its start on each pass.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from pathlib import Path
+from typing import Any
+
+import pytest
+import yaml
+from livebus import Bus
+from recording.bagfiles import NS, Msg, write
+from recording.test_play import STEPS, T0, drive
+
+SIM = ("--ros-args", "-p", "use_sim_time:=true")
+
+
+@pytest.mark.parametrize("wire", ["dds", "zenoh"])
+def test_view_frames_dates_the_tree_in_the_recordings_time(tmp_path: Path, wire: str) -> None:
+    path = write(tmp_path / "drive", "mcap", drive())
+    bus = Bus(tmp_path, wire)
+    try:
+        play = bus.robotmodel("bag", "play", str(path), "--clock", "100", "--loop")
+        play.wait_line("Playing", timeout=60, stream="err")
+        frames = bus.robotmodel("view_frames", "--wait-time", "3", "-o", str(tmp_path / "frames"), *SIM)
+        assert frames.popen.wait(60) == 0, frames.err[-5:]
+    finally:
+        bus.reap()
+    m = re.search(r'"Recorded at time: ([\d.]+)"', (tmp_path / "frames.gv").read_text())
+    assert m, (tmp_path / "frames.gv").read_text()
+    recorded = float(m[1])
+    # /clock's time: inside the recording (its stamps are T0 .. T0 + 6 s), next to the newest /tf it
+    # gave; a wall-clock view_frames would date it today.
+    newest = float(yaml.safe_load((tmp_path / "frames.yaml").read_text())["base_link"]["most_recent_transform"])
+    assert T0 / NS <= recorded <= T0 / NS + (STEPS - 1) / 20 + 0.1, recorded
+    assert abs(recorded - newest) < 0.5, (recorded, newest)
+    assert not [line for line in frames.err if "use_sim_time" in line]  # used, not 'ignored here'
+
+
+def _step(frames: dict[str, Any]) -> int | None:
+    """The drive's step k whose recorded pose base_footprint is drawn at (None: not drawn, or not a recorded pose)."""
+    m = frames.get("base_footprint")
+    if m is None:
+        return None
+    k = round(m[0, 3] / 0.05)
+    yaw = 0.01 * k
+    recorded = [[math.cos(yaw), -math.sin(yaw), 0.05 * k], [math.sin(yaw), math.cos(yaw), 0.0]]
+    return k if 0 <= k < STEPS and bool((abs(m[:2, [0, 1, 3]] - recorded) < 1e-5).all()) else None
+
+
+@pytest.mark.parametrize("wire", ["dds", "zenoh"])
+def test_view_tf_draws_each_pass_of_a_looping_replay(tmp_path: Path, wire: str) -> None:
+    """With sim time the robot goes back to the drive's start on each pass; a wall-clock viewer's buffer
+    keeps the first pass's end as its newest transform, and the robot stays there."""
+    from viewerws import viewer_state
+
+    diffbot = Path(__file__).resolve().parents[2] / "urdf" / "diffbot.urdf.xacro"
+    last = 40  # 2 s of the drive per pass
+    msgs = [Msg(m.topic, m.log_ns, m.kind, [(p, "base_footprint", t, pose) for p, _c, t, pose in m.value])
+            for m in drive()[1:last + 2]]
+    path = write(tmp_path / "drive", "mcap", msgs)
+    bus = Bus(tmp_path, wire)
+    try:
+        view = bus.robotmodel("view", str(diffbot), "--tf", "--fixed-frame", "odom", "--port", "0", *SIM)
+        url = view.wait_line(r"^http://127\.0\.0\.1:\d+/(?= \(|$)", timeout=120).group(0)
+        bus.robotmodel("bag", "play", str(path), "--clock", "100", "--loop")
+        # (viewer_state gives the last state it saw when its deadline passes: checked below)
+        late = _step(viewer_state(url, lambda s: _step(s[1]) in range(3 * last // 4, last + 1))[1])
+        again = _step(viewer_state(url, lambda s: _step(s[1]) in range(last // 4 + 1), timeout=20)[1])
+        assert late is not None and again is not None and again <= last // 4 < late, (late, again)
+        view.wait_line("Detected jump back in time. Clearing TF buffer.", timeout=10, stream="err")
+    finally:
+        bus.reap()
+    assert not [line for line in view.err if "use_sim_time" in line and "ignored" in line]
