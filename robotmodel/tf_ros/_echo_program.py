@@ -46,14 +46,19 @@ def can_transform_reason(buffer: Any, target: str, source: str) -> str:
 
 
 def _pause(stop: Any, clock: Any, period: float) -> None:
-    """One period of ``clock``'s time (a sim clock's pace, as ros::Rate keeps it), ended early by ``stop``."""
+    """One period of ``clock``'s time (a sim clock's pace, as ros::Rate keeps it), ended early by ``stop``.
+
+    A jump back of the clock (a looping bag) ends it too, as ros::Time's sleep does: the time
+    slept to would otherwise not come again.
+    """
     from robotmodel.time import Duration, SystemClock
 
     if isinstance(clock, SystemClock):
         stop.wait(period)
         return
-    until = clock.now() + Duration(seconds=period)
-    while not stop.is_set() and not clock.sleep_until(until, Duration(seconds=0.1)):
+    start = clock.now()
+    until = start + Duration(seconds=period)
+    while not stop.is_set() and not clock.sleep_until(until, Duration(seconds=0.1)) and clock.now() >= start:
         pass
 
 

@@ -79,3 +79,37 @@ def test_view_tf_draws_each_pass_of_a_looping_replay(tmp_path: Path, wire: str) 
     finally:
         bus.reap()
     assert not [line for line in view.err if "use_sim_time" in line and "ignored" in line]
+
+
+@pytest.mark.parametrize("wire", ["dds", "zenoh"])
+def test_tf2_echo_and_the_sliders_follow_a_looping_clock(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+                                                         wire: str) -> None:
+    """tf2_echo's buffer is cleared on each loop, so it prints the replayed transforms again (a wall-clock one
+    keeps printing the first pass's last); joint_state_publisher_gui stamps the sliders' states in /clock's time."""
+    from contextlib import contextmanager
+
+    from livebus import joined
+    from recording.test_play import echo_blocks
+
+    from robotmodel.bus import Node
+    from robotmodel.msgs import JointState
+
+    diffbot = Path(__file__).resolve().parents[2] / "urdf" / "diffbot.urdf.xacro"
+    path = write(tmp_path / "drive", "mcap", drive()[:42])  # /tf_static and 2 s of /tf
+    states: list[int] = []
+
+    def went_back() -> bool:
+        stamps = [s for s, _ in echo_blocks(list(echo.out))]
+        return any(b < a for a, b in zip(stamps, stamps[1:]))
+
+    with contextmanager(joined)(Bus(tmp_path, wire), monkeypatch) as bus, Node("probe") as node:
+        node.create_subscription(JointState, "/joint_states",
+                                 lambda m: states.append(m.header.stamp.sec * NS + m.header.stamp.nanosec), 10)
+        echo = bus.robotmodel("tf2_echo", "odom", "laser", "5", *SIM)
+        gui = bus.robotmodel("joint_state_publisher_gui", str(diffbot), "--port", "0", *SIM)
+        gui.wait_line(r"^http://127\.0\.0\.1:\d+/", timeout=120)
+        echo.wait_line("Waiting for transform", stream="err")
+        bus.robotmodel("bag", "play", str(path), "--clock", "100", "-r", "2", "--loop")
+        echo.wait_for(went_back, 30, "tf2_echo printing the replay again after a loop")
+        echo.wait_line("Detected jump back in time. Clearing TF buffer.", timeout=10, stream="err")
+    assert states and all(T0 <= s <= T0 + 2 * NS for s in states), [s - T0 for s in states[:5]]
