@@ -9,6 +9,7 @@ sent before any /clock came, is stamped 0 (rclcpp's ``now()`` in its constructor
 
 from __future__ import annotations
 
+import itertools
 import threading
 from collections.abc import Callable
 from contextlib import contextmanager
@@ -82,7 +83,7 @@ def test_state_publishers_stamp_and_pace_in_clock_time(tmp_path: Path, monkeypat
     # joint_state_publisher's stamps are /clock's: inside the recording, not today's wall time, and it
     # published in each pass, 0.1 s of recording apart (10 Hz of ROS time; the wall's would be 0.2 s at -r 2).
     assert states and all(T0 <= s <= T0 + SPAN for s in states), [s - T0 for s in states[:5]]
-    runs = [b - a for a, b in zip(states, states[1:]) if 0 < b - a]
+    runs = [b - a for a, b in itertools.pairwise(states) if b > a]
     assert runs and 0.08 <= sum(runs) / len(runs) / NS <= 0.13, runs
-    assert sum(1 for a, b in zip(states, states[1:]) if b < a) >= 1  # it went on after a loop
+    assert sum(1 for a, b in itertools.pairwise(states) if b < a) >= 1  # it went on after a loop
     assert wheels and all(T0 <= s <= T0 + SPAN for s in wheels)

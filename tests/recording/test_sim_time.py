@@ -8,6 +8,7 @@ replay is drawn again from its start on each pass.
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
 from pathlib import Path
@@ -100,7 +101,7 @@ def test_tf2_echo_and_the_sliders_follow_a_looping_clock(tmp_path: Path, monkeyp
 
     def went_back() -> bool:
         stamps = [s for s, _ in echo_blocks(list(echo.out))]
-        return any(b < a for a, b in zip(stamps, stamps[1:]))
+        return any(b < a for a, b in itertools.pairwise(stamps))
 
     with contextmanager(joined)(Bus(tmp_path, wire), monkeypatch) as bus, Node("probe") as node:
         node.create_subscription(JointState, "/joint_states",
