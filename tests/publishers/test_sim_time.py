@@ -82,8 +82,9 @@ def test_state_publishers_stamp_and_pace_in_clock_time(tmp_path: Path, monkeypat
     assert statics and set(statics) == {0}, statics
     # joint_state_publisher's stamps are /clock's: inside the recording, not today's wall time, and it
     # published in each pass, 0.1 s of recording apart (10 Hz of ROS time; the wall's would be 0.2 s at -r 2).
-    assert states and all(T0 <= s <= T0 + SPAN for s in states), [s - T0 for s in states[:5]]
+    # (/clock may run a tick past a pass's last message on a loaded machine: 0.5 s of slack, far from today)
+    assert states and not [s - T0 for s in states if not T0 <= s <= T0 + SPAN + NS // 2], states[:5]
     runs = [b - a for a, b in itertools.pairwise(states) if b > a]
     assert runs and 0.08 <= sum(runs) / len(runs) / NS <= 0.13, runs
     assert sum(1 for a, b in itertools.pairwise(states) if b < a) >= 1  # it went on after a loop
-    assert wheels and all(T0 <= s <= T0 + SPAN for s in wheels)
+    assert wheels and not [s - T0 for s in wheels if not T0 <= s <= T0 + SPAN + NS // 2]

@@ -40,7 +40,7 @@ def test_view_frames_dates_the_tree_in_the_recordings_time(tmp_path: Path, wire:
     # /clock's time: inside the recording (its stamps are T0 .. T0 + 6 s), next to the newest /tf it
     # gave; a wall-clock view_frames would date it today.
     newest = float(yaml.safe_load((tmp_path / "frames.yaml").read_text())["base_link"]["most_recent_transform"])
-    assert T0 / NS <= recorded <= T0 / NS + (STEPS - 1) / 20 + 0.1, recorded
+    assert T0 / NS <= recorded <= T0 / NS + (STEPS - 1) / 20 + 0.5, recorded
     assert abs(recorded - newest) < 0.5, (recorded, newest)
     assert not [line for line in frames.err if "use_sim_time" in line]  # used, not 'ignored here'
 
@@ -113,4 +113,6 @@ def test_tf2_echo_and_the_sliders_follow_a_looping_clock(tmp_path: Path, monkeyp
         bus.robotmodel("bag", "play", str(path), "--clock", "100", "-r", "2", "--loop")
         echo.wait_for(went_back, 30, "tf2_echo printing the replay again after a loop")
         echo.wait_line("Detected jump back in time. Clearing TF buffer.", timeout=10, stream="err")
-    assert states and all(T0 <= s <= T0 + 2 * NS for s in states), [s - T0 for s in states[:5]]
+        gui.wait_for(lambda: len(states) >= 5, 20, "five /joint_states from joint_state_publisher_gui")
+    # (/clock may run a tick past a pass's last message on a loaded machine: 0.5 s of slack, far from today)
+    assert states and not [s - T0 for s in states if not T0 <= s <= T0 + 2 * NS + NS // 2], states[:5]
