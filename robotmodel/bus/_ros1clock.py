@@ -6,13 +6,16 @@ looked at once, when the node starts. True, the node's time is the last
 a bag loops); otherwise it is the system clock. On the ROS 2 wires the node's own ``use_sim_time``
 parameter decides, as rclpy's ``TimeSource`` does; the caller passes its value.
 :func:`node_clock` gives the clock; :meth:`TopicClock.wait_for_valid` is roscpp's
-``ros::Time::waitForValid`` (what lets its timers start only once time runs).
+``ros::Time::waitForValid`` (what lets its timers start only once time runs);
+:meth:`TopicClock.on_jump_back` is how tf2_ros's Buffer, given the node's clock, hears of a
+jump back (a looping bag) and clears itself (see :func:`robotmodel.tf_ros.clear_on_jump_back`).
 """
 
 from __future__ import annotations
 
 import threading
 import time
+from collections.abc import Callable
 from typing import Any
 
 from robotmodel.time import Clock, Duration, SimClock, SystemClock, Time
@@ -30,10 +33,20 @@ class TopicClock(SimClock):
         from robotmodel.msgs.rosgraph_msgs import Clock as ClockMsg
 
         super().__init__()
+        self._jump_back: list[Callable[[Time, Time], None]] = []
         self._sub = node.create_subscription(ClockMsg, "/clock", self._on_clock, 10)
 
+    def on_jump_back(self, callback: Callable[[Time, Time], None]) -> None:
+        """Call ``callback(before, after)`` whenever ``/clock`` goes back (rcl's jump callback, backward only)."""
+        self._jump_back.append(callback)
+
     def _on_clock(self, msg: Any) -> None:
-        self.set(Time(nanoseconds=msg.clock.sec * 1_000_000_000 + msg.clock.nanosec))
+        before = self.now()
+        after = Time(nanoseconds=msg.clock.sec * 1_000_000_000 + msg.clock.nanosec)
+        self.set(after)
+        if after < before:
+            for callback in list(self._jump_back):
+                callback(before, after)
 
     def wait_for_valid(self, stop: threading.Event | None = None, timeout: float | None = None) -> bool:
         """Block until the first ``/clock`` came (time is not 0); False when ``stop`` or ``timeout`` came first."""

@@ -181,15 +181,19 @@ class JointStatePublisher:
         from robotmodel.time import Duration
 
         period, step = Duration(seconds=1.0 / self.rate), Duration(seconds=0.1)
-        due = self.clock.now() + period
+        last = self.clock.now()
+        due = last + period
         while not self._stop.is_set():
             if not self.clock.sleep_until(due, step):
+                now = self.clock.now()
+                if now < last:  # a jump back while waiting: as rcl's timer, next call a period from now
+                    last, due = now, now + period
                 continue
             try:
                 self.publish()
             except RobotModelError:
                 self.log.exception("publishing joint states failed")
-            now = self.clock.now()
+            now = last = self.clock.now()
             due = due + period
             # the clock jumped ahead, or back (a looping bag): start again from now
             if due < now or due - now > period + period:

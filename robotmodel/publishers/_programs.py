@@ -28,12 +28,11 @@ _BOOLS = ("publish_default_positions", "publish_default_velocities", "publish_de
 _WHY = {
     "dependent_joints": "joint_state_publisher replaces it with the URDF's mimic tags once a robot is loaded",
     "robot_description": "joint_state_publisher reads the robot from FILE or the robot_description topic",
-    "use_sim_time": "on ROS 2 wires time is the system's (on ROS 1, /use_sim_time is followed)",
     "qos_overrides": "QoS overrides are not read here",
 }
-_RSP_PARAMS = frozenset({"robot_description", "publish_frequency", "ignore_timestamp", "frame_prefix"})
-_RSP_WHY = {"use_sim_time": "on ROS 2 wires time is the system's (on ROS 1, /use_sim_time is followed)",
-            "qos_overrides": "QoS overrides are not read here"}
+_RSP_PARAMS = frozenset({"robot_description", "publish_frequency", "ignore_timestamp", "frame_prefix",
+                         "use_sim_time"})
+_RSP_WHY = {"qos_overrides": "QoS overrides are not read here"}
 
 
 def jsp_settings(values: Mapping[str, Any], warn: Callable[[str], None], *, rate: float = 10.0,
@@ -65,8 +64,9 @@ def jsp_settings(values: Mapping[str, Any], warn: Callable[[str], None], *, rate
         zero = typed_param(values, param, "double", "integer") if param.startswith("zeros.") else None
         if isinstance(zero, (int, float)):
             settings["zeros"][param.removeprefix("zeros.")] = float(zero)
-    warn_unused_params(values, lambda n: n in _BOOLS or n in ("rate", "delta", "source_list") or n.startswith("zeros."),
-                warn, _WHY)
+    typed_param(values, "use_sim_time", "bool")  # the node's clock: the caller reads it (node_clock)
+    warn_unused_params(values, lambda n: n in _BOOLS or n in ("rate", "delta", "source_list", "use_sim_time")
+                       or n.startswith("zeros."), warn, _WHY)
     return settings
 
 
@@ -123,9 +123,10 @@ def run_joint_state_publisher(file: str | None = None, mappings: Mapping[str, st
     name = ros.node_name or _JSP
     log = ros_console(logger_name(namespace, name))
     on_ros1 = ros1_wire()
+    values = {} if on_ros1 else node_params(ros, namespace, name)
     try:
-        settings = {} if on_ros1 else jsp_settings(node_params(ros, namespace, name), log.warning, rate=rate,
-                                                   zeros=dict(zeros or {}), source_list=source_list)
+        settings = {} if on_ros1 else jsp_settings(values, log.warning, rate=rate, zeros=dict(zeros or {}),
+                                                   source_list=source_list)
     except RosArgsError as exc:
         print(f"robotmodel joint-state-publisher: error: {exc}", file=sys.stderr)
         return 2
@@ -144,8 +145,10 @@ def run_joint_state_publisher(file: str | None = None, mappings: Mapping[str, st
             desc = jsp_description(node, log)
             if desc is None:
                 return 1
-        # stamped in ROS time (/clock with /use_sim_time on ROS 1), as rospy.Time.now() stamps them
-        with JointStatePublisher(desc, bus=node, logger=log, clock=node_clock(node), **settings):
+        # Stamped and paced in ROS time, as rospy.Time.now() and rclpy's timers are: /clock with
+        # /use_sim_time on ROS 1, with the node's use_sim_time parameter on the ROS 2 wires.
+        clock = node_clock(node, values.get("use_sim_time") is True)
+        with JointStatePublisher(desc, bus=node, logger=log, clock=clock, **settings):
             stop.wait()
     return 0
 
@@ -165,7 +168,7 @@ def run_robot_state_publisher(file: str | None = None, mappings: Mapping[str, st
     line's ``_param:=`` values are set there first), the robot from FILE or the server's
     ``robot_description``. Returns the exit code.
     """
-    from robotmodel.bus import Node
+    from robotmodel.bus import Node, node_clock
     from robotmodel.publishers._description_topic import DescriptionTopic
     from robotmodel.publishers._rsp import RobotStatePublisher
     from robotmodel.publishers._rsp_state import check_publish_frequency
@@ -196,6 +199,7 @@ def run_robot_state_publisher(file: str | None = None, mappings: Mapping[str, st
             if value is not None:
                 settings[param] = value
         text = typed_param(values, "robot_description", "string")
+        use_sim_time = typed_param(values, "use_sim_time", "bool") is True
         warn_unused_params(values, lambda n: n in _RSP_PARAMS, log.warning, _RSP_WHY)
     except RosArgsError as exc:
         print(f"robotmodel robot-state-publisher: error: {exc}", file=sys.stderr)
@@ -209,6 +213,9 @@ def run_robot_state_publisher(file: str | None = None, mappings: Mapping[str, st
     stop = stop_on_signals()
     # RSP's topics are relative (joint_states, robot_description): they follow the namespace; /tf does not.
     with Node(name, namespace, connect=list(connect), remappings=ros.remaps) as node:
+        # ROS time, as rclcpp's RSP: /tf_static and "moved backwards in time" follow /clock under sim
+        # time; its first /tf_static is stamped 0 before any /clock came (rclcpp's now() in its constructor).
+        clock = node_clock(node, use_sim_time)
         topic = None
         if desc is None:
             # Neither FILE nor parameter: the robot another node publishes (a stock ROS 2's RSP would
@@ -219,7 +226,7 @@ def run_robot_state_publisher(file: str | None = None, mappings: Mapping[str, st
             if desc is None:
                 topic.close()
                 return 0
-        with RobotStatePublisher(desc, bus=node, logger=log, **settings) as rsp:
+        with RobotStatePublisher(desc, bus=node, logger=log, clock=clock, **settings) as rsp:
             rsp.serve_parameters()  # ros2 param get/set, as ROS 2's robot_state_publisher
             if topic is not None:
                 _follow_descriptions(topic, rsp, stop, log)

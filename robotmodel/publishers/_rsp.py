@@ -160,7 +160,8 @@ class RobotStatePublisher:
         table.declare("publish_frequency", float(self.logic.publish_frequency))
         table.declare("ignore_timestamp", bool(self.logic.ignore_timestamp))
         table.declare("frame_prefix", self.frame_prefix)
-        table.declare("use_sim_time", False)
+        # what the clock follows (set at start; a later `param set` of it does not switch clocks here)
+        table.declare("use_sim_time", not isinstance(self.clock, SystemClock))
 
         def on_set(params: list[Any]) -> Any:
             for param in params:

@@ -112,10 +112,11 @@ class Player:
                 latched = True
                 depth = latched_depth or 1
             for profile in getattr(ext, "offered_qos_profiles", None) or ():
-                if int(profile.durability) == int(Durability.TRANSIENT_LOCAL):
+                # rosbags gives its own enums (not ints) for the profiles a robotmodel/rosbag2 MCAP carries
+                if int(getattr(profile.durability, "value", profile.durability)) == int(Durability.TRANSIENT_LOCAL):
                     latched = True
                     depth = latched_depth or max(int(profile.depth), 1)
-                if int(profile.reliability) == int(Reliability.BEST_EFFORT):
+                if int(getattr(profile.reliability, "value", profile.reliability)) == int(Reliability.BEST_EFFORT):
                     reliable = False
         return QoS(depth, reliability=Reliability.RELIABLE if reliable else Reliability.BEST_EFFORT,
                    durability=Durability.TRANSIENT_LOCAL if latched else Durability.VOLATILE)

@@ -16,7 +16,7 @@ from collections.abc import Sequence
 from typing import Any
 
 from robotmodel.errors import EchoArgsError, RosArgsError
-from robotmodel.rcl import node_params, ros_log, split_ros_words, warn_ignored_params
+from robotmodel.rcl import logger_name, node_params, ros_log, split_ros_words, warn_ignored_params
 from robotmodel.signals import stop_on_signals
 from robotmodel.tf_ros._echo_args import HELP_MORE, USAGE, failure_text, format_echo, parse_echo_args, waiting_message
 from robotmodel.tf_ros._words import split_bag_words, split_connect
@@ -46,14 +46,19 @@ def can_transform_reason(buffer: Any, target: str, source: str) -> str:
 
 
 def _pause(stop: Any, clock: Any, period: float) -> None:
-    """One period of ``clock``'s time (a sim clock's pace, as ros::Rate keeps it), ended early by ``stop``."""
+    """One period of ``clock``'s time (a sim clock's pace, as ros::Rate keeps it), ended early by ``stop``.
+
+    A jump back of the clock (a looping bag) ends it too, as ros::Time's sleep does: the time
+    slept to would otherwise not come again.
+    """
     from robotmodel.time import Duration, SystemClock
 
     if isinstance(clock, SystemClock):
         stop.wait(period)
         return
-    until = clock.now() + Duration(seconds=period)
-    while not stop.is_set() and not clock.sleep_until(until, Duration(seconds=0.1)):
+    start = clock.now()
+    until = start + Duration(seconds=period)
+    while not stop.is_set() and not clock.sleep_until(until, Duration(seconds=0.1)) and clock.now() >= start:
         pass
 
 
@@ -96,6 +101,7 @@ def run_tf2_echo(words: Sequence[str]) -> int:
     from robotmodel.bus import Node, node_clock
     from robotmodel.errors import TransformException
     from robotmodel.tf import Buffer, Time
+    from robotmodel.tf_ros._jump import clear_on_jump_back
     from robotmodel.tf_ros._listener import TransformListener
 
     period = 1.0 / echo.rate_hz
@@ -109,6 +115,8 @@ def run_tf2_echo(words: Sequence[str]) -> int:
             TransformListener(buffer, node):
         # ROS time: /clock with use_sim_time (ROS 1's /use_sim_time, ROS 2's parameter), as tf2_echo's rate sleeps
         clock = node_clock(node, use_sim_time)
+        # tf2_echo's tf2_ros::Buffer has the node's clock: a jump back (a looping bag) clears it.
+        clear_on_jump_back(buffer, clock, logger_name(namespace, name), ros1=node.context.backend.name == "ros1")
         last_log = -1.0
         while not stop.is_set():
             reason = can_transform_reason(buffer, source, target)

@@ -9,8 +9,12 @@
 - ``publish``: the sliders' values go out on ``/joint_states`` (joint_state_publisher_gui).
 
 Relative topics (``robot_description``, ``joint_states``) resolve under the node's namespace,
-as rviz's displays resolve them. ``robotmodel view`` and ``joint-state-publisher-gui`` are
-:func:`serve_live`; a Python program starts a :class:`LiveViewer` itself.
+as rviz's displays resolve them. With ``use_sim_time`` (ROS 2's node parameter; ROS 1's
+``/use_sim_time``) the node's time is ``/clock``'s, as rviz's: a jump back of it (a looping
+bag) clears the TF buffer, as rviz's tf2_ros buffer with the node's clock does, so each pass
+of a replay is drawn again from its start (without it the buffer's newest transform stays the
+recording's end), and the sliders' /joint_states are stamped in it. ``robotmodel view`` and
+``joint-state-publisher-gui`` are :func:`serve_live`; a Python program starts a :class:`LiveViewer` itself.
 """
 
 from __future__ import annotations
@@ -138,7 +142,8 @@ class LiveViewer:
     to use (else one named ``node_name`` in ``namespace`` is opened with ``connect`` and
     ``remappings``, and closed with the viewer). ``make_viewer`` builds the Viewer for a
     description (default: ``Viewer(description, port=port)``); ``jsp_options`` are the
-    publishing :class:`robotmodel.publishers.JointStatePublisher`'s keyword settings.
+    publishing :class:`robotmodel.publishers.JointStatePublisher`'s keyword settings;
+    ``use_sim_time`` puts the node on ``/clock``'s time (see the module's docstring).
     """
 
     def __init__(self, description: RobotDescription | None = None, *, follow: bool = False, tf: bool = False,
@@ -146,8 +151,9 @@ class LiveViewer:
                  tf_frames: str | Sequence[str] = "all", node: Any = None, node_name: str = "robotmodel_view",
                  namespace: str = "/", connect: Sequence[str] = (), remappings: Sequence[str] = (),
                  port: int | None = None, make_viewer: Callable[[RobotDescription], Viewer] | None = None,
-                 jsp_options: Mapping[str, Any] | None = None) -> None:
+                 jsp_options: Mapping[str, Any] | None = None, use_sim_time: bool = False) -> None:
         self.description = description
+        self.use_sim_time = use_sim_time
         self.follow, self.tf, self.publish = follow, tf, publish
         self.fixed_frame, self.track, self.tf_frames = fixed_frame, track, tf_frames
         self.viewer: Viewer | None = None
@@ -167,6 +173,14 @@ class LiveViewer:
         self._topic = DescriptionTopic(self.node) if description is None else None
         if self._topic is not None:
             self._closers.insert(0, self._topic)
+
+    def _clock(self) -> Any:
+        """The node's ROS time: /clock under sim time, else the system's (None without a node)."""
+        if self.node is None:
+            return None
+        from robotmodel.bus import node_clock
+
+        return node_clock(self.node, self.use_sim_time)
 
     @property
     def url(self) -> str | None:
@@ -190,10 +204,12 @@ class LiveViewer:
         if self._topic is not None:
             threading.Thread(target=_watch_descriptions, args=(self._topic, viewer, self._stop), daemon=True).start()
         viewer.publishing, viewer.following = self.publish, self.follow
+        clock = self._clock()
         if self.publish:
             from robotmodel.publishers import JointStatePublisher
 
-            jsp = JointStatePublisher(self.description, bus=self.node, zeros=viewer.positions, **self._jsp_options)
+            jsp = JointStatePublisher(self.description, bus=self.node, zeros=viewer.positions, clock=clock,
+                                      **self._jsp_options)
             self._closers.insert(0, jsp)
             # Read per move: a new robot_description changes both robots' joints.
             viewer.on_joints(lambda _all: jsp.set({k: v for k, v in viewer.positions.items()
@@ -201,11 +217,16 @@ class LiveViewer:
         if self.follow:
             self._closers.insert(0, _follow(self.node, viewer))
         if self.tf:
+            from robotmodel.rcl import logger_name
             from robotmodel.tf import Buffer
             from robotmodel.tf_ros import TransformListener
+            from robotmodel.tf_ros._jump import clear_on_jump_back
 
             buffer = Buffer()
             self._closers.insert(0, TransformListener(buffer, self.node))
+            node = self.node
+            clear_on_jump_back(buffer, clock, logger_name(node.get_namespace(), node.get_name()),
+                               ros1=node.context.backend.name == "ros1")
             threading.Thread(target=_tf_loop, args=(buffer, viewer, self.fixed_frame, self.track, self.tf_frames,
                                                     self._stop), daemon=True).start()
         return True
@@ -252,7 +273,7 @@ def serve_live(options: ViewOptions, desc: RobotDescription | None, initial: Map
     (the caller has read them); without them every parameter override is named as ignored.
     Returns the exit code (0).
     """
-    from robotmodel.rcl import RosArgs, warn_ignored_params
+    from robotmodel.rcl import RosArgs, node_params, warn_ignored_params
     from robotmodel.signals import stop_on_signals
     from robotmodel.viewer._options import build_viewer, frames_spec
 
@@ -261,11 +282,13 @@ def serve_live(options: ViewOptions, desc: RobotDescription | None, initial: Map
     name = options.node_name or "robotmodel_view"
     ros = options.ros or RosArgs()
     if jsp_options is None and (desc is None or publish or options.follow or options.tf):
-        warn_ignored_params(ros, options.namespace, name)
+        warn_ignored_params(ros, options.namespace, name, used=("use_sim_time",))
+    use_sim_time = node_params(ros, options.namespace, name).get("use_sim_time") is True
     tf_frames = frames_spec(options.frames) if options.frames is not None else "all"
     with LiveViewer(desc, follow=options.follow, tf=options.tf, publish=publish, fixed_frame=options.fixed_frame,
                     track=options.track, tf_frames=tf_frames, node_name=name, namespace=options.namespace,
                     connect=options.connect, remappings=ros.remaps, jsp_options=jsp_options,
+                    use_sim_time=use_sim_time,
                     make_viewer=lambda d: build_viewer(options, d, initial, frames, serve=True)) as live:
         if not live.start(stop):
             return 0

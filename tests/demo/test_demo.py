@@ -1,7 +1,9 @@
 """``robotmodel demo`` as a user runs it: files left behind, the numbers it prints, nothing left running.
 
 The recording is read back here with rosbags (not robotmodel's reader), and the offline
-answer the demo prints is recomputed from its raw /tf and /tf_static messages.
+answer the demo prints is recomputed from its raw /tf and /tf_static messages. The recording is
+then played back with ``bag play --clock`` (issue 22's must-show 3) into a sim-time tf2_echo and
+view_frames, on the one demo run this file's first test makes (a demo run takes ~20 s here).
 """
 
 from __future__ import annotations
@@ -18,7 +20,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from livebus import Proc
+from livebus import Bus, Proc
 from procscan import assert_none_left
 from rosbags.highlevel import AnyReader
 from viewerhelpers import READY, is_robot_grey, png_pixels
@@ -79,7 +81,7 @@ def _expected_offline(transforms: list, at_ns: int) -> tuple[float, float, float
             math.remainder(myaw + yaw, 2 * math.pi))
 
 
-def test_demo_runs_headless_and_leaves_its_files(tmp_path: Path) -> None:
+def test_demo_runs_headless_and_leaves_its_files(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     out = tmp_path / "demo"
     done = subprocess.run([*DEMO, "--duration", "10", "--output", str(out)], env=_env(), cwd=tmp_path,
                           capture_output=True, text=True, timeout=300, check=False)
@@ -125,6 +127,40 @@ def test_demo_runs_headless_and_leaves_its_files(tmp_path: Path) -> None:
     assert float(m.group(3)) == pytest.approx(x, abs=0.0006)
     assert float(m.group(4)) == pytest.approx(y, abs=0.0006)
     assert float(m.group(8)) == pytest.approx(yaw, abs=0.0006)
+    _replay_with_clock(mcap, tmp_path, capsys)
+
+
+def _replay_with_clock(mcap: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """``bag play --clock`` of the demo's recording: a tf2_echo with ``use_sim_time`` prints what ``tf2_echo --bag
+    --time`` says for the same instants, and a view_frames with it dates its tree inside the recording."""
+    from recording.test_play import echo_blocks
+    from robotmodel.cli.main import main
+
+    with AnyReader([mcap]) as reader:
+        start, end = reader.start_time, reader.end_time
+    sim = ("--ros-args", "-p", "use_sim_time:=true")
+    bus = Bus(tmp_path, "dds")
+    try:
+        echo = bus.robotmodel("tf2_echo", "map", "base_footprint", *sim)
+        echo.wait_line("Waiting for transform", stream="err")
+        play = bus.robotmodel("bag", "play", str(mcap), "--clock", "100", "-r", "4")
+        play.wait_line("Playing", timeout=60, stream="err")
+        frames = bus.robotmodel("view_frames", "--wait-time", "1.5", "-o", str(tmp_path / "replayed"), *sim)
+        play.wait_line("Playback finished", timeout=60, stream="err")
+        assert frames.popen.wait(60) == 0, frames.err[-5:]
+        echo.stop()
+    finally:
+        bus.reap()
+    blocks = echo_blocks(echo.out)
+    assert len(blocks) >= 3, echo.out
+    capsys.readouterr()
+    for stamp, live in blocks[:: max(1, len(blocks) // 4)]:
+        assert start <= stamp <= end
+        assert main(["tf2_echo", "map", "base_footprint", "--bag", str(mcap), "--time",
+                     f"{stamp // 10**9}.{stamp % 10**9:09d}", "--no-progress"]) == 0
+        assert echo_blocks(capsys.readouterr().out.splitlines()) == [(stamp, live)]
+    recorded = re.search(r'"Recorded at time: ([\d.]+)"', (tmp_path / "replayed.gv").read_text())
+    assert recorded and start / 1e9 <= float(recorded[1]) <= end / 1e9 + 0.1, recorded
 
 
 def test_ctrl_c_stops_everything_and_keeps_the_recording(tmp_path: Path) -> None:

@@ -193,8 +193,8 @@ def test_play_words(words: list[str], clock: float | None, rate: float, offset_n
 
 
 def test_view_tf_replays_the_drive(tmp_path: Path) -> None:
-    """``view --tf`` draws the played drive: base_footprint in odom at recorded poses, moving as recorded; a
-    screenshot shows the robot where the drive ends."""
+    """``view --tf`` with ``use_sim_time`` draws the drive played with ``--clock``: base_footprint in odom at
+    recorded poses, moving as recorded; a screenshot shows the robot where the drive ends."""
     from viewerhelpers import HIDE_HELPERS, READY, grey_points, robot_fraction
     from viewerws import viewer_state
 
@@ -219,15 +219,15 @@ def test_view_tf_replays_the_drive(tmp_path: Path) -> None:
 
     try:
         view = bus.robotmodel("view", str(diffbot), "--tf", "--fixed-frame", "odom", "--track", "base_footprint",
-                              "--port", "0")
+                              "--port", "0", "--ros-args", "-p", "use_sim_time:=true")
         url = view.wait_line(r"^http://127\.0\.0\.1:\d+/(?= \(|$)", timeout=120).group(0)
-        looping = bus.robotmodel("bag", "play", str(path), "--loop", "-r", "2")
+        looping = bus.robotmodel("bag", "play", str(path), "--loop", "-r", "2", "--clock")
         first = step(viewer_state(url, lambda s: step(s[1]) is not None)[1])
         later = step(viewer_state(url, lambda s: step(s[1]) not in (None, first))[1])
         assert first is not None and later is not None and later != first
         looping.kill()
         # The last second once more, so that the robot stays where the drive ends (k = STEPS - 1) for the screenshot.
-        bus.robotmodel("bag", "play", str(path), "--start-offset", "5.5", "-r", "2").wait_line(
+        bus.robotmodel("bag", "play", str(path), "--start-offset", "5.5", "-r", "2", "--clock").wait_line(
             "Playback finished", timeout=60, stream="err")
         with Browser(timeout=60) as browser:
             browser.navigate(url)

@@ -5,11 +5,13 @@ value="true"/>`` or ``rosbag play --clock`` setups do); a rospy publisher runs /
 1000 s at five times the wall clock's speed. Debian's C++ robot_state_publisher beside ours
 stamps /tf_static in that time (its one-shot timer fires once time runs); ours must too;
 robotmodel's tf2_echo prints at its rate in that time, as tf_echo's ros::Rate does; and its
-joint_state_publisher stamps and paces its messages in it, as rospy's Time.now() and Rate do.
+joint_state_publisher stamps and paces its messages in it, as rospy's Time.now() and Rate do;
+its view_frames listens for --wait-time seconds of it (rospy.sleep) and dates the tree in it.
 """
 
 from __future__ import annotations
 
+import re
 import sys
 import time
 from pathlib import Path
@@ -30,7 +32,7 @@ def _static_stamps(lines: list[str], callerid: str) -> list[float]:
             if topic == "/tf_static" and caller == callerid]
 
 
-def test_sim_time_from_a_rospy_clock(ros1: Ros1World) -> None:
+def test_sim_time_from_a_rospy_clock(ros1: Ros1World, tmp_path: Path) -> None:
     params = ros1.node("setter").params
     params.set_param("/use_sim_time", True)
     for ns in ("", "/j"):
@@ -48,6 +50,8 @@ def test_sim_time_from_a_rospy_clock(ros1: Ros1World) -> None:
     ros1.start(*rm, "robot_state_publisher", "__name:=rm_rsp")
     echo = ros1.start(*rm, "tf2_echo", "world", "arm_turret_link")
     ros1.start(*rm, "joint_state_publisher", "__ns:=/j")  # 10 Hz of sim time, stamped in it
+    gv = tmp_path / "frames.gv"
+    ros1.start(*rm, "view_frames", "--wait-time", "5", "-o", str(tmp_path / "frames"))
     wait_until(lambda: _static_stamps(frames.lines, "/robot_state_publisher") and _static_stamps(frames.lines, "/rm_rsp"),
                60, "/tf_static from both robot_state_publishers")
     # both in the sim time, past its start (neither the wall clock's ~1.7e9 s, nor 0)
@@ -66,3 +70,8 @@ def test_sim_time_from_a_rospy_clock(ros1: Ros1World) -> None:
     # The mean spacing: each one is quantised by /clock's ticks (5x sim time), which a loaded machine
     # coarsens (one CI simulation: 0.120, 0.073, 0.125, 0.060, ...; median 0.12, mean 0.101).
     assert (stamps[-1] - stamps[0]) / (len(stamps) - 1) == pytest.approx(0.1, abs=0.02), stamps
+    # view_frames: 5 s of sim time (1 s of wall), the tree dated in sim time (a wall date is ~1.7e9 s)
+    wait_until(gv.exists, 60, "view_frames' frames.gv")
+    recorded = re.search(r'"Recorded at time: ([\d.]+)"', gv.read_text())
+    assert recorded and START + 5 <= float(recorded[1]) < START + 1000, gv.read_text()
+    assert '"arm_base_link" -> "arm_turret_link"' in gv.read_text()
