@@ -186,14 +186,16 @@ class TimeCache:
             self._newest = self._oldest = smv[start]
             return True
         latest = self._newest
-        if self.window is not None:
+        smv = self._smv
+        window = self.window
+        if window is not None:
             # Prune with the newest stamp before this insert, as tf2 does (lazy by one insert).
-            limit = latest - self.window
+            limit = latest - window
             if self._oldest < limit:
                 k = start + 1
-                if self._smv[k] >= limit:  # one sample out of the window: the steady state
+                if smv[k] >= limit:  # one sample out of the window: the steady state
                     self._start = k
-                    self._oldest = self._smv[k]
+                    self._oldest = smv[k]
                 else:
                     self._prune(limit)
             if stamp < limit:
@@ -201,8 +203,7 @@ class TimeCache:
         if stamp > latest:
             if end == self._cap:
                 self._make_room(1)
-                end = self._end
-            smv = self._smv
+                end, smv = self._end, self._smv
             smv[end] = stamp
             _pack(smv, self._pbase + end * _ROW, *pose)
             if self._qmv is not None:
@@ -363,6 +364,10 @@ class TimeCache:
                 parent = qmv[i]
                 if qmv[i + 1] != parent:
                     return _unpack(smv, offset), parent  # never interpolate across a parent change
+            if t0 == t:
+                # At the sample's own stamp the interpolation gives its pose (ratio 0: weights 1
+                # and 0, up to the sign of a zero): no SLERP to compute.
+                return _unpack(smv, offset), parent
             # Two 7-double reads cost less than one 14-double read and two slices.
             return pose_interpolate(_unpack(smv, offset), _unpack(smv, offset + _ROW), (t - t0) / (t1 - t0)), parent
         if end == start:
