@@ -1,6 +1,7 @@
 """Memory of the TF tools after one 100k-transform /tf message, against their idle footprint.
 
-Each tool runs as its own process on a private bus (own zenoh port, ROS domain and ROS_HOME):
+Each tool runs as its own process on a private bus (own zenoh port, ROS domain and ROS_HOME;
+the wire RMW_IMPLEMENTATION selects, DDS when unset):
 ``tf2_echo map tool``, ``view_frames`` (listening, measured before it writes its files) and
 ``view --tf`` (the browser viewer's server, with a bundled robot). Its resident set (VmRSS)
 is read once it is subscribed and settled (idle), then this process publishes one TFMessage
@@ -18,8 +19,8 @@ stamp and 7 doubles, the array shared by 255 frames) and the stamp's int object 
 What the tools keep after the message, besides that ~34 MiB: nothing of the message. The
 listener decodes straight into records, the buffer keeps its own copies of names and stamps
 (the decoded objects would pin the allocator's pages of the whole message), and once the wire
-has let go of the 9.6 MB payload (the DDS wire after the batch it was taken in, zenoh after its
-callback) glibc's free heap goes back to the system (malloc_trim: robotmodel/_heap.py). Without
+has let go of the 9.6 MB payload (the DDS wire after the batch it was taken in, zenoh 0.2 s
+after its callback) glibc's free heap goes back to the system (malloc_trim: robotmodel/_heap.py). Without
 that last step ~10-17 MiB more stayed mapped (tf2_echo 2.1-2.25x idle).
 
 Run: python benchmarks/bench_tf_memory.py [--only tf2_echo|view_frames|view]

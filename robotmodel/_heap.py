@@ -1,13 +1,14 @@
 """Giving the C heap's freed memory back to the system after a large burst (glibc's malloc_trim).
 
-A subscriber that has just handled an unusually large message (a listener given one /tf
-message of 100k transforms) frees tens of MiB: the decoded records, and the wire's copy of
-the payload with the buffers it was reassembled in. glibc keeps such freed heap memory
-mapped, so a long-running tool would hold it for good. The payload, though, is still held by
-the wire while the subscriber's callback runs: the subscriber calls :func:`release_after_sample`,
-and the wire calls :func:`sample_released` once it has let go of the sample (the DDS and zenoh
-wires do). Trimming on every message would cost a heap walk and fresh page faults per
-message (a camera stream), so it happens only on request.
+A subscriber that has just handled an unusually large message (a listener given one /tf message
+of 100k transforms) frees tens of MiB: the decoded records, and the wire's copy of the payload
+with the buffers it was reassembled in. glibc keeps such freed heap memory mapped, so a
+long-running tool would hold it for good. The payload, though, is still held by the wire while
+the subscriber's callback runs: the subscriber calls :func:`release_after_sample`, and the wire
+calls :func:`sample_released` once it has let go of the sample (the DDS wire, after the batch
+the sample was taken in), or :func:`sample_releasing` as it is about to (zenoh's callback,
+after which the Rust side drops the received buffers). Trimming on every message would cost a
+heap walk and fresh page faults per message (a camera stream), so it happens only on request.
 """
 
 from __future__ import annotations
@@ -15,10 +16,13 @@ from __future__ import annotations
 import threading
 from collections.abc import Callable
 
-__all__ = ["release_after_sample", "release_free_memory", "sample_released"]
+__all__ = ["release_after_sample", "release_free_memory", "sample_released", "sample_releasing"]
 
 
 _requested = threading.Event()
+# Long enough for a wire's thread to return from the callback and drop the sample (microseconds
+# on an idle machine); a trim that comes early only gives back less.
+_SHORTLY_S = 0.2
 _trim: list[Callable[[int], int] | None] = []  # found at the first trim: ctypes costs start-up time
 
 
@@ -52,3 +56,15 @@ def sample_released() -> None:
     if _requested.is_set():
         _requested.clear()
         release_free_memory()
+
+
+def sample_releasing() -> None:
+    """Called by a wire that lets go of the sample only after this returns: trim shortly after, if asked to.
+
+    zenoh's callbacks are such: the Rust side drops the received buffers once the callback returns.
+    """
+    if _requested.is_set():
+        _requested.clear()
+        timer = threading.Timer(_SHORTLY_S, release_free_memory)
+        timer.daemon = True  # never holds up the process's exit
+        timer.start()
