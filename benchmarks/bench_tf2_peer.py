@@ -22,7 +22,7 @@ same load on a machine shared with other jobs; each figure is the median CPU tim
 - The message out alone, no goal: ours (six dataclass objects) against genpy's
   TransformStamped built as tf2_py's C++ builds it (the class called, then each field set
   through the attribute protocol). Both lookups build a message; genpy's costs ~2.6 us of
-  tf2_py's ~6 us, ours ~0.9 us of our ~10.7 us.
+  tf2_py's ~6 us, ours ~0.6-0.9 us of our ~10-11 us.
 - ``--costs``: the CPU cost, in this interpreter and run, of one float operation, one libm
   call, one 14-double read from an array and one RLock hold: the blocks of a pure-Python lookup.
 
@@ -35,8 +35,8 @@ operation at a low load (16-20 ns at the loads of these runs, see ``--costs``) t
 arithmetic at best, before the bracket search, the plan and the lock (~1 us together); the
 goal for the core lookup, 0.7x tf2_py's ~5.6-6 us, is ~4 us in all. What was left to take has
 been taken (the walk planned once per pair, links inlined with no tuple or call per link, one
-bracket search for links stamped alike, no SLERP at a sample's own stamp), so the measured
-floor is ~8.5-9 us for ``lookup_ns`` and ~1.5x.
+bracket search for links stamped alike, no SLERP at a sample's own stamp), so what is measured
+is ~9-10.5 us for ``lookup_ns`` at loads of 9-12 (1.2-1.6x, the ratio moving with the load).
 
 A compiled kernel (issue 23, item 5: only a dependency with wheels, nothing compiled on the
 user's machine), measured on this data in a scratch script, not added: PyGLM 2.8.3
