@@ -36,6 +36,7 @@ from cyclonedds.pub import DataWriter
 from cyclonedds.sub import DataReader
 from cyclonedds.topic import Topic
 
+from robotmodel._heap import sample_released
 from robotmodel.bus._backend import (
     CDR,
     Backend,
@@ -409,17 +410,22 @@ class DdsSubscription(Handle):
 
     def _drain(self) -> None:
         while (reader := self._reader) is not None and (batch := take_raw(reader)):
-            for data, info in batch:
-                if not info.valid_data:
-                    continue
-                handle = info.publication_handle
-                seq = self._seqs[handle] = self._seqs.get(handle, 0) + 1
-                sample = Sample(self.topic, self.typename, data,
-                                SampleInfo(seq, int(info.source_timestamp), self._writer_gid(handle)))
-                try:
-                    self._callback(sample)
-                except Exception:  # one bad callback must not stop the subscription
-                    log.exception("subscription callback on '%s' failed", self.topic)
+            self._deliver(batch)
+        # The batches' payloads are let go by now (a callback may have asked for the heap back).
+        sample_released()
+
+    def _deliver(self, batch: list[tuple[bytes, Any]]) -> None:
+        for data, info in batch:
+            if not info.valid_data:
+                continue
+            handle = info.publication_handle
+            seq = self._seqs[handle] = self._seqs.get(handle, 0) + 1
+            sample = Sample(self.topic, self.typename, data,
+                            SampleInfo(seq, int(info.source_timestamp), self._writer_gid(handle)))
+            try:
+                self._callback(sample)
+            except Exception:  # one bad callback must not stop the subscription
+                log.exception("subscription callback on '%s' failed", self.topic)
 
     def close(self) -> None:
         """Delete the reader and stop its pump."""

@@ -26,6 +26,7 @@ from typing import Any
 import zenoh
 import zenoh.ext as zx
 
+from robotmodel._heap import sample_releasing
 from robotmodel.bus._backend import Handle
 from robotmodel.bus._config import (
     LOOPBACK_ANY_PORT,
@@ -264,6 +265,7 @@ class ZenohSession:
             att = sample.attachment
             callback(key if exact else str(sample.key_expr), sample.payload.to_bytes(),
                      None if att is None else att.to_bytes())
+            sample_releasing()  # the sample goes once this returns (a callback may have asked for the heap back)
 
         if q.transient_local:
             sub: Any = self._with_callback_thread(lambda: zx.declare_advanced_subscriber(

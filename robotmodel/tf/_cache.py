@@ -1,18 +1,21 @@
 """Per-child-frame storage: tf2's TimeCache (time window, no extrapolation) and StaticCache.
 
-A TimeCache keeps its samples in one preallocated array, ascending by stamp: stamps (int64
-ns) and poses (7 doubles: x, y, z, qx, qy, qz, qw), 64 bytes a sample plus at most 1/8
-spare capacity; parent ids (int32) get an array of their own only once a frame's samples
-have more than one parent. The live samples are the slice ``[start, end)``: pruning only
-moves ``start``, appending only moves ``end``, and the storage is compacted or regrown
-when ``end`` reaches the capacity, which costs amortized O(1) per insert at any window
-length. Scalar code reads and writes the array.array directly (no NumPy call per sample);
-vectorized lookups get zero-copy NumPy views.
+A TimeCache keeps its samples in one preallocated array, ascending by stamp: stamps (int64 ns)
+and poses (7 doubles: x, y, z, qx, qy, qz, qw), 64 bytes a sample plus at most 1/8 spare
+capacity; a frame's first sample sits in a row of an array shared by up to 255 frames (an array
+of its own would add ~80 bytes of object to each of a 100k-frame message's frames), and the
+second insert moves it to an array of the frame's own; parent ids (int32) get an array of their
+own only once a frame's samples have more than one parent. The live samples are the slice
+``[start, end)``: pruning only moves ``start``, appending only moves ``end``, and the storage
+is compacted or regrown when ``end`` reaches the capacity, which costs amortized O(1) per
+insert at any window length. Scalar code reads and writes the array.array directly (no NumPy
+call per sample); vectorized lookups get zero-copy NumPy views.
 """
 
 from __future__ import annotations
 
 import struct
+import threading
 from array import array
 from bisect import bisect_left, bisect_right
 from dataclasses import dataclass
@@ -33,6 +36,24 @@ _pack = _POSE.pack_into
 _ROW = _POSE.size
 _MIN_SPARE = 16
 _SLOTS, _PARENTS = array("q", [0]), array("i", [0])
+# Shared arrays of first samples: _SHARED_ROWS rows each, the last one never handed out (a
+# cache's storage is shared exactly when _pbase != 8 * _cap; see TimeCache._first_row).
+_SHARED_ROWS = 256
+_SHARED_PBASE = 8 * _SHARED_ROWS
+_shared_lock = threading.Lock()
+_shared: list[array[int]] = []
+_shared_next = [_SHARED_ROWS]
+
+
+def _shared_row() -> tuple[array[int], int]:
+    """A free row of the current shared array (a new array when it is full)."""
+    with _shared_lock:
+        row = _shared_next[0]
+        if row >= _SHARED_ROWS - 1:
+            _shared[:] = [_SLOTS * (8 * _SHARED_ROWS)]
+            row = 0
+        _shared_next[0] = row + 1
+        return _shared[0], row
 
 
 def format_time(ns: int) -> str:
@@ -63,9 +84,10 @@ class TimeCache:
 
     # One fixed-size array.array of 8 * cap int64 slots: the stamps in [0, cap), then the poses
     # (7 doubles a row) from byte _pbase = 8 * cap on. Parent ids get their own array only once
-    # two samples differ (until then every sample has ``parent``). A frame with one sample
-    # costs ~250 bytes (a NumPy array or memoryview costs about that alone); NumPy code gets
-    # zero-copy views on demand.
+    # two samples differ (until then every sample has ``parent``). An empty or one-sample
+    # cache uses row _start of a shared array instead (_pbase = 8 * _SHARED_ROWS, _cap =
+    # _start + 1, so _pbase != 8 * _cap): its first sample costs the 64 bytes of the row.
+    # NumPy code gets zero-copy views on demand.
     _smv: array[int]
     _qmv: array[int] | None
     _cap: int
@@ -80,15 +102,22 @@ class TimeCache:
         self._qmv = None
         self._start = self._end = 0
         self._newest = self._oldest = 0  # stamps at end - 1 and start, valid when not empty
-        self._allocate(1)
+        self._first_row()
+
+    def _first_row(self) -> None:
+        """Empty, with room for one sample in a row of a shared array."""
+        self._smv, row = _shared_row()
+        self._qmv = None
+        self._start = self._end = row
+        self._cap, self._pbase = row + 1, _SHARED_PBASE  # one int object for all (rows are small ints)
 
     # ----------------------------------------------------------------- storage
     def _views(self) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.float64], npt.NDArray[np.int32] | None]:
         """Zero-copy NumPy views of the whole storage (capacity included); no parents while they are one."""
-        cap, smv = self._cap, self._smv
+        rows, smv = self._pbase >> 3, self._smv
         parents = None if self._qmv is None else np.frombuffer(self._qmv, dtype=np.int32)
-        return (np.frombuffer(smv, dtype=np.int64, count=cap),
-                np.frombuffer(smv, dtype=np.float64, count=7 * cap, offset=8 * cap).reshape(cap, 7), parents)
+        return (np.frombuffer(smv, dtype=np.int64, count=rows),
+                np.frombuffer(smv, dtype=np.float64, count=7 * rows, offset=8 * rows).reshape(rows, 7), parents)
 
     def _allocate(self, cap: int) -> None:
         start, end = self._start, self._end
@@ -96,9 +125,9 @@ class TimeCache:
         smv = _SLOTS * (8 * cap)
         qmv = None if self._qmv is None else _PARENTS * cap
         if live:
-            old, old_cap = self._smv, self._cap
+            old, old_rows = self._smv, self._pbase >> 3
             smv[:live] = old[start:end]
-            smv[cap:cap + 7 * live] = old[old_cap + 7 * start:old_cap + 7 * end]
+            smv[cap:cap + 7 * live] = old[old_rows + 7 * start:old_rows + 7 * end]
             if qmv is not None and self._qmv is not None:
                 qmv[:live] = self._qmv[start:end]
         self._smv, self._qmv = smv, qmv
@@ -111,7 +140,7 @@ class TimeCache:
         live = end - start
         need = live + extra
         cap = self._cap
-        if start and need <= cap and start >= live >> 3 and cap <= 4 * need + 64:
+        if start and need <= cap and start >= live >> 3 and cap <= 4 * need + 64 and self._pbase == 8 * cap:
             smv = self._smv
             smv[:live] = smv[start:end]
             smv[cap:cap + 7 * live] = smv[cap + 7 * start:cap + 7 * end]
@@ -126,6 +155,8 @@ class TimeCache:
         if self._end == self._start:
             self.parent, self._qmv = parent, None
         elif self._qmv is None:
+            if self._pbase != 8 * self._cap:  # a shared row: an array of its own first
+                self._make_room(1)
             qmv = _PARENTS * self._cap
             if self.parent:
                 np.frombuffer(qmv, dtype=np.int32)[self._start:self._end] = self.parent
@@ -142,27 +173,29 @@ class TimeCache:
     # ------------------------------------------------------------------ insert
     def insert(self, stamp: int, pose: Pose7, parent: int) -> bool:
         """Insert a sample as tf2 does; False when it is older than the window (TF_OLD_DATA)."""
-        start, end = self._start, self._end
         if parent != self.parent:
-            self._set_parent(parent)
+            self._set_parent(parent)  # may move the samples to an array of their own
+        start, end = self._start, self._end
         if end == start:
             smv = self._smv
-            smv[0] = stamp
-            _pack(smv, self._pbase, *pose)
-            self._start, self._end = 0, 1
+            smv[start] = stamp
+            _pack(smv, self._pbase + start * _ROW, *pose)
+            self._end = start + 1
             # Stamps are kept as the array's own ints, never the caller's object: that one was
             # typically decoded with a whole message's throw-away objects and would pin their memory.
-            self._newest = self._oldest = smv[0]
+            self._newest = self._oldest = smv[start]
             return True
         latest = self._newest
-        if self.window is not None:
+        smv = self._smv
+        window = self.window
+        if window is not None:
             # Prune with the newest stamp before this insert, as tf2 does (lazy by one insert).
-            limit = latest - self.window
+            limit = latest - window
             if self._oldest < limit:
                 k = start + 1
-                if self._smv[k] >= limit:  # one sample out of the window: the steady state
+                if smv[k] >= limit:  # one sample out of the window: the steady state
                     self._start = k
-                    self._oldest = self._smv[k]
+                    self._oldest = smv[k]
                 else:
                     self._prune(limit)
             if stamp < limit:
@@ -170,8 +203,7 @@ class TimeCache:
         if stamp > latest:
             if end == self._cap:
                 self._make_room(1)
-                end = self._end
-            smv = self._smv
+                end, smv = self._end, self._smv
             smv[end] = stamp
             _pack(smv, self._pbase + end * _ROW, *pose)
             if self._qmv is not None:
@@ -182,6 +214,8 @@ class TimeCache:
         return self._insert_at_or_before_newest(stamp, pose, parent)
 
     def _insert_at_or_before_newest(self, stamp: int, pose: Pose7, parent: int) -> bool:
+        if self._pbase != 8 * self._cap:  # a shared row: an array of its own first (room in front is not ours)
+            self._make_room(1)
         smv = self._smv
         pos = bisect_right(smv, stamp, self._start, self._end)
         k = pos - 1
@@ -226,6 +260,8 @@ class TimeCache:
         n = stamps.shape[0]
         if n == 0:
             return []
+        if self._pbase != 8 * self._cap:  # a shared row: an array of its own first, sized below
+            self._allocate(max(self._end - self._start, 1))
         empty = self._end == self._start
         if parent != self.parent:
             self._set_parent(parent)
@@ -328,6 +364,10 @@ class TimeCache:
                 parent = qmv[i]
                 if qmv[i + 1] != parent:
                     return _unpack(smv, offset), parent  # never interpolate across a parent change
+            if t0 == t:
+                # At the sample's own stamp the interpolation gives its pose (ratio 0: weights 1
+                # and 0, up to the sign of a zero): no SLERP to compute.
+                return _unpack(smv, offset), parent
             # Two 7-double reads cost less than one 14-double read and two slices.
             return pose_interpolate(_unpack(smv, offset), _unpack(smv, offset + _ROW), (t - t0) / (t1 - t0)), parent
         if end == start:
@@ -370,13 +410,14 @@ class TimeCache:
 
     def nbytes(self) -> int:
         """Bytes held by the arrays (capacity included)."""
+        if self._pbase != 8 * self._cap:
+            return 8 * _SLOTS.itemsize  # its row of a shared array
         return self._cap * (8 * _SLOTS.itemsize + (0 if self._qmv is None else _PARENTS.itemsize))
 
     def clear(self) -> None:
         """Drop every sample (and the capacity they used)."""
-        self.parent, self._qmv = 0, None
-        self._start = self._end = 0
-        self._allocate(1)
+        self.parent = 0
+        self._first_row()
 
 
 def _own(pose: Pose7) -> Pose7:

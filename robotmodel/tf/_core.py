@@ -82,10 +82,9 @@ class BufferCore(FrameGraph):
     def set_transform(self, transform: TransformStamped, authority: str, is_static: bool = False) -> bool:
         """Insert a TransformStamped (an adapter over :meth:`insert`); False when tf2 would drop it."""
         try:
-            tr = transform.transform.translation
-            rot = transform.transform.rotation
-            stamp = transform.header.stamp
-            pose = (tr.x, tr.y, tr.z, rot.x, rot.y, rot.z, rot.w)
+            header, tf = transform.header, transform.transform
+            tr, rot, stamp = tf.translation, tf.rotation, header.stamp
+            x, y, z, rx, ry, rz, rw = tr.x, tr.y, tr.z, rot.x, rot.y, rot.z, rot.w
         except AttributeError as exc:
             raise InvalidArgumentException(f"Invalid argument passed to setTransform - not a TransformStamped "
                                            f"({exc})") from None
@@ -93,22 +92,28 @@ class BufferCore(FrameGraph):
             ns = stamp.sec * 1_000_000_000 + stamp.nanosec  # a stamp message (checked by insert)
         except (AttributeError, TypeError):
             ns = time_arg_ns(stamp, f'setTransform argument stamp of child_frame_id "{transform.child_frame_id}"')
-        parent, child = transform.header.frame_id, transform.child_frame_id
+        parent, child = header.frame_id, transform.child_frame_id
         # The common case checked here as insert checks it (a unit quaternion with |w| > 0.5 needs
         # no canonical form but its sign); anything else goes through insert's full checks.
-        x, rw = pose[0], pose[6]
         if (type(x) is float and type(rw) is float and type(ns) is int and 0 <= ns < STAMP_LIMIT
                 and type(parent) is str and type(child) is str and parent and child and parent != child
                 and parent[0] != "/" and child[0] != "/"):
-            _, y, z, rx, ry, rz, _ = pose
             n2 = rx * rx + ry * ry + rz * rz + rw * rw
             total = x + y + z + n2
             if total - total == 0.0 and abs(n2 - 1.0) < 1e-12:
                 if rw > 0.5:
-                    return self._store(parent, child, ns, pose, authority, is_static)
-                if rw < -0.5:
-                    return self._store(parent, child, ns, (x, y, z, -rx, -ry, -rz, -rw), authority, is_static)
-        return self.insert(parent, child, ns, pose, authority, is_static)
+                    pose = (x, y, z, rx, ry, rz, rw)
+                elif rw < -0.5:
+                    pose = (x, y, z, -rx, -ry, -rz, -rw)
+                else:
+                    return self.insert(parent, child, ns, (x, y, z, rx, ry, rz, rw), authority, is_static)
+                # _store, inline (one call less on every message).
+                with self._lock:
+                    done = self._put(parent, child, ns, pose, authority, is_static)
+                if done is True:
+                    return True
+                return self._after_put(done, child, ns, authority)
+        return self.insert(parent, child, ns, (x, y, z, rx, ry, rz, rw), authority, is_static)
 
     def insert(self, parent: str, child: str, stamp_ns: int, pose: Iterable[float], authority: str,
                is_static: bool = False) -> bool:
@@ -196,11 +201,11 @@ class BufferCore(FrameGraph):
         with self._lock:
             put = self._put
             for parent, child, stamp_ns, values in items:
-                accepted, retry = put(parent, child, stamp_ns, values, authority, is_static)
-                if not accepted:
+                done = put(parent, child, stamp_ns, values, authority, is_static)
+                if done is False:
                     rejected.append((child, stamp_ns))
-                elif retry:
-                    retries.extend(retry)
+                elif done is not True:
+                    retries.extend(done)
         for child, stamp_ns in rejected:
             _log_old_data(child, stamp_ns, authority)
         for request in dict.fromkeys(retries):
@@ -210,18 +215,29 @@ class BufferCore(FrameGraph):
     def _store(self, parent: str, child: str, stamp_ns: int, values: Pose7, authority: str, is_static: bool) -> bool:
         """Insert a checked sample (valid names without '/', stamp in range, canonical pose)."""
         with self._lock:
-            accepted, retry = self._put(parent, child, stamp_ns, values, authority, is_static)
-        if not accepted:
+            done = self._put(parent, child, stamp_ns, values, authority, is_static)
+        return done is True or self._after_put(done, child, stamp_ns, authority)
+
+    @staticmethod
+    def _after_put(done: bool | list[Callable[[], None]], child: str, stamp_ns: int, authority: str) -> bool:
+        """What :meth:`_put` left to do outside the lock (log TF_OLD_DATA, retry waiting requests)."""
+        if done is False:
             _log_old_data(child, stamp_ns, authority)
-        elif retry:
-            for request in retry:
+            return False
+        if done is not True:
+            for request in done:
                 request()
-        return accepted
+        return True
 
     def _put(self, parent: str, child: str, stamp_ns: int, values: Pose7, authority: str,
-             is_static: bool) -> tuple[bool, list[Callable[[], None]] | None]:
-        """Store a checked sample (the lock held): whether it was accepted, and the waiting requests to retry."""
-        child_id = self._ids.get(child) or self._intern(child)
+             is_static: bool) -> bool | list[Callable[[], None]]:
+        """Store a checked sample (the lock held).
+
+        False: rejected (too old); True: accepted; a non-empty list: accepted, and these waiting
+        requests are to be retried once the lock is released.
+        """
+        ids = self._ids
+        child_id = ids.get(child) or self._intern(child)
         cache = self._caches[child_id]
         # ROS 2 switches a frame between static and dynamic, dropping its history.
         if is_static:
@@ -231,16 +247,15 @@ class BufferCore(FrameGraph):
         elif cache.__class__ is not TimeCache:
             cache = self._caches[child_id] = TimeCache(self.cache_time_ns)
             self._topology += 1
-        parent_id = self._ids.get(parent) or self._intern(parent)
+        parent_id = ids.get(parent) or self._intern(parent)
         if cache.parent != parent_id and cache.parent > 0:
             self._topology += 1  # a new parent: chains through this frame change
-        accepted = cache.insert(stamp_ns, values, parent_id)
-        retry = None
-        if accepted:
-            cache.authority = authority
-            if self._waiters:
-                retry = self._wake(child)
-        return accepted, retry
+        if not cache.insert(stamp_ns, values, parent_id):
+            return False
+        cache.authority = authority
+        if self._waiters:
+            return self._wake(child) or True
+        return True
 
     def insert_many(self, parent: str, child: str, stamps: npt.ArrayLike, poses: npt.ArrayLike,
                     authority: str) -> int:

@@ -79,17 +79,21 @@ def chain_pose(links: tuple[TimeCache | StaticCache, ...], t: int, final: bool) 
                         t0, t1 = smv[i], smv[i + 1]
                     r = (t - t0) / (t1 - t0)
                     u = 1.0 - r
-                bx, by, bz, px, py, pz, pw, cx, cy, cz, rx, ry, rz, rw = _unpack_pair(smv, cache._pbase + i * _ROW)
-                dot = px * rx + py * ry + pz * rz + pw * rw
-                theta = _acos(dot if 0.0 <= dot <= 1.0 else min(1.0, abs(dot)))
-                bx, by, bz = bx * u + cx * r, by * u + cy * r, bz * u + cz * r
-                if theta != 0.0:
-                    sn = _sin(theta)
-                    wa = _sin(u * theta) / sn
-                    wb = _sin(r * theta) / sn
-                    if dot < 0.0:
-                        wb = -wb
-                    px, py, pz, pw = px * wa + rx * wb, py * wa + ry * wb, pz * wa + rz * wb, pw * wa + rw * wb
+                if r == 0.0:  # t is the stamp of sample i: its pose is the interpolation's (as in TimeCache.sample)
+                    bx, by, bz, px, py, pz, pw = _unpack(smv, cache._pbase + i * _ROW)
+                else:
+                    bx, by, bz, px, py, pz, pw, cx, cy, cz, rx, ry, rz, rw = _unpack_pair(
+                        smv, cache._pbase + i * _ROW)
+                    dot = px * rx + py * ry + pz * rz + pw * rw
+                    theta = _acos(dot if 0.0 <= dot <= 1.0 else min(1.0, abs(dot)))
+                    bx, by, bz = bx * u + cx * r, by * u + cy * r, bz * u + cz * r
+                    if theta != 0.0:
+                        sn = _sin(theta)
+                        wa = _sin(u * theta) / sn
+                        wb = _sin(r * theta) / sn
+                        if dot < 0.0:
+                            wb = -wb
+                        px, py, pz, pw = px * wa + rx * wb, py * wa + ry * wb, pz * wa + rz * wb, pw * wa + rw * wb
             elif t == newest and cache._end > cache._start:
                 bx, by, bz, px, py, pz, pw = _unpack(cache._smv, cache._pbase + (cache._end - 1) * _ROW)
             else:

@@ -8,6 +8,7 @@ import time
 from types import TracebackType
 from typing import TYPE_CHECKING, Any
 
+from robotmodel._heap import release_after_sample, release_free_memory
 from robotmodel.errors import MessageError, TransformException
 from robotmodel.msgs import TFMessage
 from robotmodel.tf_ros._authority import PublisherNames
@@ -23,6 +24,8 @@ DEFAULT_AUTHORITY = "default_authority"
 
 _log = logging.getLogger("robotmodel.tf_ros")
 _WARN_PERIOD_S = 5.0
+#: Transforms in one message from which a listener gives freed memory back afterwards.
+BIG_MESSAGE = 10_000
 
 
 class TransformListener:
@@ -119,13 +122,11 @@ class TransformListener:
         who = raw.info.publisher if self._authority is None and raw.info.publisher else self._who(gid)
         if not (is_static and self._names is not None):
             self._insert_all(msg if insert is None else records, who, is_static)
-            # Imported here, not at the top: robotmodel.tf loads numpy, which `--help` must not
-            # (by the first message the buffer has loaded it: this is a dictionary lookup).
-            from robotmodel.tf._memory import BIG_MESSAGE, release_free_memory
-
             if insert is not None and len(records) >= BIG_MESSAGE:
+                # The records' heap now, the payload's (and the wire's buffers) once the wire drops it.
                 del records
                 release_free_memory()
+                release_after_sample()
             return
         items: list[Any] = list(msg.transforms) if insert is None else records
         with self._static_lock:

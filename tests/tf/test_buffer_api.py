@@ -38,6 +38,35 @@ def test_messages_have_ros2_paths_and_defaults() -> None:
     assert PoseStamped().pose.orientation.w == 1.0
 
 
+def test_lookup_message_equals_the_constructed_one_field_by_field() -> None:
+    # lookup_transform builds its message without the dataclass constructors (for speed): every
+    # field of every nested message must still be set, a field added later included.
+    import dataclasses
+
+    from robotmodel.msgs import Quaternion, Transform, Vector3
+    from robotmodel.msgs.builtin_interfaces import Time as StampMsg
+
+    (x, y, z), (qx, qy, qz, qw) = (0.5, 0.0, 0.0), (0.0, 0.0, math.sin(0.2), math.cos(0.2))
+    sent = make("map", "tool", (x, y, z), quat=(qx, qy, qz, qw))
+    sent.header.stamp = StampMsg(sec=2, nanosec=7)
+    buf = Buffer()
+    buf.set_transform(sent, "a")
+    got = buf.lookup_transform("map", "tool", Time(nanoseconds=2 * SEC + 7))
+    want = TransformStamped(header=Header(stamp=StampMsg(sec=2, nanosec=7), frame_id="map"), child_frame_id="tool",
+                            transform=Transform(translation=Vector3(x=x, y=y, z=z),
+                                                rotation=Quaternion(x=qx, y=qy, z=qz, w=qw)))
+
+    def same(a: object, b: object) -> None:
+        assert type(a) is type(b)
+        if not dataclasses.is_dataclass(a):
+            assert a == pytest.approx(b, abs=1e-15)
+            return
+        for f in dataclasses.fields(a):
+            same(getattr(a, f.name), getattr(b, f.name))  # AttributeError if one was never set
+
+    same(got, want)
+
+
 def test_lookup_waits_for_data_from_another_thread() -> None:
     buf = Buffer()
 

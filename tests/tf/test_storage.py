@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import logging
 import math
+import random
 import threading
 import time
 
@@ -72,8 +73,8 @@ ops = st.lists(st.tuples(st.integers(0, 40), st.sampled_from(range(len(POOL))), 
                min_size=1, max_size=60)
 
 
-def _check_same(buf: Buffer, ref: Tf2List) -> None:
-    cache = buf._caches[buf._ids["c"]]
+def _check_same(buf: Buffer, ref: Tf2List, child: str = "c") -> None:
+    cache = buf._caches[buf._ids[child]]
     assert len(cache) == len(ref.items)
     stamps, poses, parents = cache.arrays()
     assert stamps.tolist() == [it[0] for it in reversed(ref.items)]
@@ -126,6 +127,44 @@ def test_insert_many_appends_sorted_data_in_one_step_with_tf2s_lazy_pruning() ->
     assert cache.oldest_stamp() == stamps[-2] - 10 * SEC
     assert len(cache) == 10_002
     assert cache.nbytes() <= 80 * len(cache)  # 68 bytes a sample plus at most 1/8 spare
+
+
+@pytest.mark.parametrize("window", [None, 10])
+def test_first_samples_in_shared_rows_never_touch_each_other(window) -> None:
+    # 700 frames' first samples share rows of a few arrays; each frame then gets one of the
+    # operations that move its samples to an array of its own (newer, older, same stamp,
+    # another parent, bulk, clear), in random order while its neighbours still share.
+    rng = random.Random(7)
+    buf = Buffer(cache_time=Duration(nanoseconds=window)) if window is not None else Buffer(unbounded=True)
+    children = [f"c{k}" for k in range(700)]
+    refs = {c: Tf2List(window) for c in children}
+    for k, c in enumerate(children):
+        stamp, value = 20 + k % 7, k % len(POOL)
+        assert buf.insert("p", c, stamp, POOL[value], "me")
+        refs[c].insert(stamp, POOL[value], "p")
+    order = children[:]
+    rng.shuffle(order)
+    for k, c in enumerate(order):
+        stamp = refs[c].items[0][0]
+        kind = k % 7
+        if kind == 6:
+            continue
+        if kind == 5:
+            buf._caches[buf._ids[c]].clear()
+            refs[c].items.clear()
+            continue
+        rows = [(stamp + 1, 1, "p"), (stamp - 3, 2, "p"), (stamp, 1, "p"), (stamp + 2, 0, "q"),
+                (stamp - 1, 0, "q")][kind:kind + 1]
+        if kind == 4:
+            rows = [(stamp + 1, 2, "p"), (stamp + 5, 1, "p"), (stamp + 9, 0, "p")]
+            assert buf.insert_many("p", c, [r[0] for r in rows], [POOL[r[1]] for r in rows], "me") == 3
+        else:
+            for st_, value, parent in rows:
+                buf.insert(parent, c, st_, POOL[value], "me")
+        for st_, value, parent in rows:
+            refs[c].insert(st_, POOL[value], parent)
+    for c in children:
+        _check_same(buf, refs[c], c)
 
 
 def test_steady_state_storage_stays_bounded_and_compact() -> None:
