@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import logging
 import threading
+import time
 from types import TracebackType
 from typing import Any
 
@@ -138,8 +139,9 @@ class RobotStatePublisher:
         with self._lock:
             if self._closed:
                 return
-            found = self.logic.state_arrays(state.names, state.positions, state.stamp_ns,
-                                            self.clock.now().nanoseconds)
+            clock = self.clock
+            now_ns = time.time_ns() if type(clock) is SystemClock else clock.now().nanoseconds
+            found = self.logic.state_arrays(state.names, state.positions, state.stamp_ns, now_ns)
             if found is not None:
                 self._publish_tf(found, Ros1TFTemplate)
 

@@ -183,7 +183,7 @@ class RobotStateLogic:
             self._plan_names, self._plan = names, self._gather(names)
         plan = self._plan
         # A sum is finite when every value is (or, rarely, overflows: then the general path decides).
-        if plan is None or len(positions) != len(names) or not math.isfinite(positions.sum()):
+        if plan is None or len(positions) != len(names) or not math.isfinite(np.add.reduce(positions)):
             return self._arrays(names, positions.tolist(), stamp_ns, now_ns)
         if now_ns < self._last_callback:
             self.log.warning("Moved backwards in time, re-publishing joint transforms!")
