@@ -126,6 +126,20 @@ def test_template_writes_the_codecs_bytes(seed: int) -> None:
         assert template.encode(stamp_ns, np.asfortranarray(translations), rotations.T.copy().T) == expected
 
 
+def test_template_reused_with_arrays_changed_in_place() -> None:
+    template = Ros1TFTemplate(["a", "bb"], ["c", "d"])
+    translations, rotations = np.ones((2, 3)), np.full((2, 4), 0.5)
+    frozen = np.arange(6.0).reshape(2, 3)
+    frozen.setflags(write=False)
+    for k in range(3):
+        translations[k % 2, k] = 7.0 + k  # the same array, other values
+        rotations[0, k] = -k
+        for t in (translations, frozen, translations):
+            expected = TF.encode(TFMessage([make_transform(p, c, tt, r, k) for p, c, tt, r in
+                                            zip(["a", "bb"], ["c", "d"], t, rotations, strict=True)]))
+            assert template.encode(k, t, rotations) == expected
+
+
 def test_template_refuses_stamps_outside_ros1_seconds() -> None:
     template = Ros1TFTemplate(["a"], ["b"])
     assert template.encode(-1, np.zeros((1, 3)), np.zeros((1, 4))) is None
