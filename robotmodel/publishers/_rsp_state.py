@@ -175,9 +175,12 @@ class RobotStateLogic:
                      now_ns: int) -> tuple[JointTransforms, int] | None:
         """As :meth:`joint_state_arrays`, for a joint state given as its names, positions and stamp.
 
-        The usual message (every variable named once, no other joint but fixed ones, no mimic
-        joint, finite values) takes a path without per-joint Python work: which names give
-        which variable is worked out once per name tuple. Any other goes the general way.
+        The usual message (every variable named once, no unknown, repeated or mimic joint,
+        finite values) takes a path without per-joint Python work: which names give which
+        variable is worked out once per name tuple (pass the same tuple object again, as
+        :class:`._jointstate_ros1.Ros1JointStateReader` does), and the per-joint last-publish stamps are written
+        only when another name set comes. Any other message goes the general way; both give
+        the same transforms, bit for bit.
         """
         if names is not self._plan_names:
             self._plan_names, self._plan = names, self._gather(names)
