@@ -5,7 +5,8 @@
   JSP-style defaults.
 - :class:`KinematicState`: mutable; link poses T_root_link (our own O(joints) FK, any
   size) and Jacobians (Pinocchio, while its Data stays under :data:`PINOCCHIO_DATA_LIMIT`).
-- :func:`joint_transforms` / :func:`static_transforms`: per-joint T_parent_child as RSP publishes.
+- :func:`joint_transforms` / :func:`static_transforms`: per-joint T_parent_child as RSP publishes
+  (:func:`variable_transforms`: the same from a vector of every variable, RSP's hot path).
 - :func:`batch_link_matrices`: N configurations at once, vectorized.
 - :func:`to_yourdfpy` / :func:`trimesh_scene`: the robot posed at a configuration as a
   ``yourdfpy.URDF`` or a ``trimesh.Scene``, for code written for those libraries.
@@ -23,6 +24,7 @@ from robotmodel.kinematics._publish import (
     batch_link_poses,
     joint_transforms,
     static_transforms,
+    variable_transforms,
 )
 from robotmodel.kinematics._report import run_fk
 from robotmodel.kinematics._state import KinematicState
@@ -44,4 +46,5 @@ __all__ = [
     "static_transforms",
     "to_yourdfpy",
     "trimesh_scene",
+    "variable_transforms",
 ]

@@ -10,13 +10,14 @@ import numpy.typing as npt
 
 from robotmodel.errors import JointValueError
 from robotmodel.kinematics._joints import KIND_FIXED, KIND_PRISMATIC, KIND_REVOLUTE, local_transforms
-from robotmodel.kinematics._model import KinematicModel
+from robotmodel.kinematics._model import KinematicModel, _Cycle
 from robotmodel.kinematics._single import check_poses
 from robotmodel.model import JointType
 from robotmodel.spatial import FloatArray, matrix_to_quat, quat_canonical, quats_canonical
 
 __all__ = [
     "JointTransforms", "batch_link_matrices", "batch_link_poses", "joint_transforms", "static_transforms",
+    "variable_transforms",
 ]
 
 
@@ -88,15 +89,13 @@ def joint_transforms(model: KinematicModel, positions: Mapping[str, float]) -> J
     except KeyError:
         complete = False
     if complete:
-        full = values[cycle.source] * cycle.multiplier + cycle.offset if cycle.has_mimics else values
-        if cycle.has_mimics and len(positions) > len(values):
+        if cycle.has_mimics and len(positions) > len(values) and any(n in positions for n in cycle.explicit_mimic):
+            full = values[cycle.source] * cycle.multiplier + cycle.offset
             for name, row in cycle.explicit_mimic.items():
                 if name in positions:
                     full[row] = positions[name]
-        translations, rotations = cycle.tables.evaluate(full)
-        # The quaternion (P·sin + Q·cos) has either sign; tf2's is the one every path gives.
-        return JointTransforms(cycle.joints, cycle.parents, cycle.children, translations,
-                               _canonical(rotations))
+            return _cycle_result(cycle, full)
+        return variable_transforms(model, values)
     index = model._joint_index
     table = model.table
     all_values = np.zeros(len(table.names))
@@ -113,6 +112,28 @@ def joint_transforms(model: KinematicModel, positions: Mapping[str, float]) -> J
             rows.append(i)
     rows.sort()
     return _select(model, rows, all_values)
+
+
+def variable_transforms(model: KinematicModel, q: FloatArray) -> JointTransforms:
+    """What robot_state_publisher sends when a joint state names every variable (and no mimic joint).
+
+    ``q`` holds the values of ``model.variables`` in that order (a float64 array); every
+    revolute, continuous and prismatic joint is published, mimic joints from their
+    masters: :func:`joint_transforms` of the same values, without the mapping.
+    """
+    cycle = model._cycle
+    if not cycle.has_mimics:
+        return _cycle_result(cycle, q)
+    full = q[cycle.source]  # q·multiplier + offset, in place
+    full *= cycle.multiplier
+    full += cycle.offset
+    return _cycle_result(cycle, full)
+
+
+def _cycle_result(cycle: _Cycle, full: FloatArray) -> JointTransforms:
+    # The quaternion (P·sin + Q·cos) has either sign; tf2's is the one every path gives.
+    translations, rotations = cycle.tables.evaluate_canonical(full)
+    return JointTransforms(cycle.joints, cycle.parents, cycle.children, translations, rotations)
 
 
 def batch_link_poses(model: KinematicModel, q: npt.ArrayLike) -> tuple[FloatArray, FloatArray]:

@@ -4,15 +4,20 @@ from __future__ import annotations
 
 import logging
 import threading
+import time
 from types import TracebackType
 from typing import Any
 
 from robotmodel.errors import MessageError
+from robotmodel.kinematics import JointTransforms
 from robotmodel.msgs import JointState, String, TFMessage, TransformStamped
 from robotmodel.publishers._jointstate_cdr import CannotDecode, JointStateDecoder
+from robotmodel.publishers._jointstate_ros1 import Ros1JointStateReader, StateArrays
 from robotmodel.publishers._once import Every
-from robotmodel.publishers._rsp_state import RobotStateLogic
+from robotmodel.publishers._rsp_state import RobotStateLogic, Template
 from robotmodel.publishers._source import RobotSource
+from robotmodel.publishers._tf_cdr import TFTemplate
+from robotmodel.publishers._tf_ros1 import Ros1TFTemplate
 from robotmodel.time import Clock, SystemClock
 
 __all__ = ["RobotStatePublisher"]
@@ -81,10 +86,12 @@ class RobotStatePublisher:
         if subscribe:
             # rclcpp's SensorDataQoS: best effort, keep last 5, volatile.
             sensor = QoS(5, reliability=Reliability.BEST_EFFORT)
-            # Set before samples can arrive on the bus's thread. The hand decoder and the byte-level
-            # /tf encoder read and write CDR; other wires (ROS 1) go through their codecs.
-            self._cdr = node.context.encoding == "cdr"
-            self._codec = codec_for(JointState, node.context.encoding)
+            # Set before samples can arrive on the bus's thread. The hand decoders and the byte-level
+            # /tf encoders are per encoding: CDR's, ROS 1's; any other goes through the codecs.
+            encoding = node.context.encoding
+            self._cdr = encoding == "cdr"
+            self._ros1 = Ros1JointStateReader() if encoding == "ros1" else None
+            self._codec = codec_for(JointState, encoding)
             self._sub = node.create_subscription(JointState, "joint_states", self._on_raw, sensor, raw=True)
 
     def _publish_setup(self) -> None:
@@ -96,6 +103,14 @@ class RobotStatePublisher:
     # -- driving ----------------------------------------------------------------------------------
     def _on_raw(self, raw: Any) -> None:
         # Undecoded samples: the hand decoder is ten times faster than the generic one on this hot path.
+        if self._ros1 is not None:
+            try:
+                state = self._ros1.read(raw.payload)
+            except CannotDecode:
+                pass
+            else:
+                self._on_ros1(state)
+                return
         try:
             if not self._cdr:
                 raise CannotDecode("not CDR")
@@ -118,7 +133,24 @@ class RobotStatePublisher:
             found = self.logic.joint_state_arrays(msg, self.clock.now().nanoseconds)
             if found is not None:
                 # Bytes straight from the arrays: no message objects on the hot path.
-                self._tf_pub.publish_raw(self.logic.encode_tf(*found))
+                self._publish_tf(found, TFTemplate)
+
+    def _on_ros1(self, state: StateArrays) -> None:
+        with self._lock:
+            if self._closed:
+                return
+            clock = self.clock
+            now_ns = time.time_ns() if type(clock) is SystemClock else clock.now().nanoseconds
+            found = self.logic.state_arrays(state.names, state.positions, state.stamp_ns, now_ns)
+            if found is not None:
+                self._publish_tf(found, Ros1TFTemplate)
+
+    def _publish_tf(self, found: tuple[JointTransforms, int], layout: type[Template]) -> None:
+        data = self.logic.encode_tf(*found, layout)
+        if data is None:  # not in the layout's range: the message path says why
+            self._tf_pub.publish(TFMessage(transforms=self.logic.stamped(*found)))
+        else:
+            self._tf_pub.publish_raw(data)
 
     def joint_state(self, msg: JointState) -> list[TransformStamped] | None:
         """Handle one JointState as robot_state_publisher does; returns what went on /tf (None: nothing)."""

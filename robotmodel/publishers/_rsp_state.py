@@ -27,8 +27,18 @@ from __future__ import annotations
 import logging
 import math
 from collections.abc import Sequence
+from itertools import repeat
 
-from robotmodel.kinematics import JointTransforms, KinematicModel, joint_transforms, static_transforms
+import numpy as np
+import numpy.typing as npt
+
+from robotmodel.kinematics import (
+    JointTransforms,
+    KinematicModel,
+    joint_transforms,
+    static_transforms,
+    variable_transforms,
+)
 from robotmodel.model import JointType
 from robotmodel.msgs.builtin_interfaces import Time
 from robotmodel.msgs.geometry_msgs import Quaternion, Transform, TransformStamped, Vector3
@@ -38,10 +48,14 @@ from robotmodel.publishers._errors import PublisherError
 from robotmodel.publishers._once import WarnOnce
 from robotmodel.publishers._source import RobotSource, resolve
 from robotmodel.publishers._tf_cdr import TFTemplate
+from robotmodel.publishers._tf_ros1 import Ros1TFTemplate
+from robotmodel.spatial import FloatArray
 
 __all__ = ["RobotStateLogic", "check_publish_frequency"]
 
 _LOG = logging.getLogger("robot_state_publisher")
+#: A /tf byte layout for one wire's encoding.
+Template = TFTemplate | Ros1TFTemplate
 _NS = 1_000_000_000
 
 
@@ -82,6 +96,9 @@ class RobotStateLogic:
         self.ignore_timestamp = ignore_timestamp
         self._prefix = frame_prefix
         self._last_publish: dict[str, int] = {}
+        # The fast path's last publish (names, stamp), written into _last_publish only when another
+        # message comes: a joint set published again and again then costs nothing per joint.
+        self._pending: tuple[tuple[str, ...], int] | None = None
         self._last_callback = 0
         self.setup(description)
 
@@ -121,8 +138,10 @@ class RobotStateLogic:
         self.model = model
         self._known = {j.name for j in desc.joints}
         self._moving = joint_transforms(model, dict.fromkeys(model.variables, 0.0))
+        self._plan_names: tuple[str, ...] | None = None
+        self._plan: npt.NDArray[np.intp] | None = None
         self._frames = self._prefixed(self._moving)
-        self._templates: dict[tuple[str, ...], TFTemplate] = {}
+        self._templates: dict[tuple[type[Template], tuple[str, ...]], Template] = {}
         self._static = static_transforms(model)
         self._warn.reset()
 
@@ -141,11 +160,80 @@ class RobotStateLogic:
         found = self.joint_state_arrays(msg, now_ns)
         if found is None:
             return None
-        return self._stamped(found[0], found[1], self._frames)
+        return self.stamped(*found)
+
+    def stamped(self, transforms: JointTransforms, stamp_ns: int) -> list[TransformStamped]:
+        """Messages of what :meth:`joint_state_arrays` gives (frame ids prefixed)."""
+        return self._stamped(transforms, stamp_ns, self._frames)
 
     def joint_state_arrays(self, msg: JointState, now_ns: int) -> tuple[JointTransforms, int] | None:
         """As :meth:`joint_state`, as arrays (frame ids without the prefix) and the stamp; see :meth:`encode_tf`."""
-        names, positions = msg.name, msg.position
+        stamp = msg.header.stamp
+        return self._arrays(msg.name, msg.position, stamp.sec * _NS + stamp.nanosec, now_ns)
+
+    def state_arrays(self, names: tuple[str, ...], positions: FloatArray, stamp_ns: int,
+                     now_ns: int) -> tuple[JointTransforms, int] | None:
+        """As :meth:`joint_state_arrays`, for a joint state given as its names, positions and stamp.
+
+        The usual message (every variable named once, no unknown, repeated or mimic joint,
+        finite values) takes a path without per-joint Python work: which names give which
+        variable is worked out once per name tuple (pass the same tuple object again, as
+        :class:`._jointstate_ros1.Ros1JointStateReader` does), and the per-joint last-publish stamps are written
+        only when another name set comes. Any other message goes the general way; both give
+        the same transforms, bit for bit.
+        """
+        if names is not self._plan_names:
+            self._plan_names, self._plan = names, self._gather(names)
+        plan = self._plan
+        # A sum is finite when every value is (or, rarely, overflows: then the general path decides).
+        if plan is None or len(positions) != len(names) or not math.isfinite(np.add.reduce(positions)):
+            return self._arrays(names, positions.tolist(), stamp_ns, now_ns)
+        if now_ns < self._last_callback:
+            self.log.warning("Moved backwards in time, re-publishing joint transforms!")
+            self._last_publish.clear()
+            self._pending = None
+        self._last_callback = now_ns
+        pending = self._pending
+        if pending is not None and pending[0] is not names:
+            self._settle()
+            pending = None
+        if not self.ignore_timestamp:
+            # Every name last published at the pending stamp, or as the dict says.
+            oldest = pending[1] if pending is not None else min(map(self._last_publish.get, names, repeat(0)))
+            if stamp_ns < min(oldest, now_ns) + self._interval:
+                if stamp_ns == 0:
+                    self._warn_zero_stamp()
+                return None
+        out = variable_transforms(self.model, positions[plan])
+        self._pending = (names, stamp_ns)
+        return out, stamp_ns
+
+    def _settle(self) -> None:
+        """Write the fast path's pending last-publish stamp into the per-joint record."""
+        if self._pending is not None:
+            names, stamp_ns = self._pending
+            self._last_publish.update(zip(names, repeat(stamp_ns)))
+            self._pending = None
+
+    def _gather(self, names: tuple[str, ...]) -> npt.NDArray[np.intp] | None:
+        """Where in ``names`` each variable's value is, if ``names`` is a usual message's; else None."""
+        index = {name: i for i, name in enumerate(names)}
+        model = self.model
+        if (not names or len(index) != len(names) or not all(n in self._known for n in names)
+                or any(n in model.mimics for n in names)):
+            return None
+        try:
+            return np.array([index[v] for v in model.variables], dtype=np.intp)
+        except KeyError:
+            return None
+
+    def _warn_zero_stamp(self) -> None:
+        self._warn.once("zero-stamp", "joint states stamped 0 are never published (robot_state_publisher "
+                        "throttles by stamp); stamp them, or set ignore_timestamp")
+
+    def _arrays(self, names: Sequence[str], positions: Sequence[float], stamp_ns: int,
+                now_ns: int) -> tuple[JointTransforms, int] | None:
+        self._settle()
         if len(names) != len(positions):
             self._bad_lengths(names, positions)
             return None
@@ -153,15 +241,12 @@ class RobotStateLogic:
             self.log.warning("Moved backwards in time, re-publishing joint transforms!")
             self._last_publish.clear()
         self._last_callback = now_ns
-        stamp = msg.header.stamp
-        stamp_ns = stamp.sec * _NS + stamp.nanosec
         if not self.ignore_timestamp:
             last = self._last_publish
             oldest = min((last.get(n, 0) for n in names), default=now_ns)
             if stamp_ns < min(oldest, now_ns) + self._interval:
                 if stamp_ns == 0:
-                    self._warn.once("zero-stamp", "joint states stamped 0 are never published (robot_state_publisher "
-                                    "throttles by stamp); stamp them, or set ignore_timestamp")
+                    self._warn_zero_stamp()
                 return None
         # The first value of a repeated name wins, as std::map::insert keeps it.
         values = dict(zip(reversed(names), reversed(positions), strict=True))
@@ -175,15 +260,22 @@ class RobotStateLogic:
             self._last_publish[name] = stamp_ns
         return out, stamp_ns
 
-    def encode_tf(self, transforms: JointTransforms, stamp_ns: int) -> bytes:
-        """The CDR bytes of the TFMessage :meth:`joint_state` would give, built without message objects."""
-        template = self._templates.get(transforms.joints)
+    def encode_tf(self, transforms: JointTransforms, stamp_ns: int,
+                  layout: type[Template] = TFTemplate) -> bytes | None:
+        """The bytes of the TFMessage :meth:`joint_state` would give, built without message objects.
+
+        ``layout`` is the wire's: :class:`TFTemplate` (CDR, the default) or
+        :class:`Ros1TFTemplate` (ROS 1). None when the stamp does not fit the layout (ROS 1's
+        unsigned seconds); the message path then names the error.
+        """
+        key = (layout, transforms.joints)
+        template = self._templates.get(key)
         if template is None:
             if len(self._templates) >= 64:  # joint sets vary only with odd publishers; stay bounded
                 self._templates.clear()
             frames = self._frames
-            template = TFTemplate([frames[j][0] for j in transforms.joints], [frames[j][1] for j in transforms.joints])
-            self._templates[transforms.joints] = template
+            template = layout([frames[j][0] for j in transforms.joints], [frames[j][1] for j in transforms.joints])
+            self._templates[key] = template
         return template.encode(stamp_ns, transforms.translations, transforms.rotations)
 
     def _finite(self, values: dict[str, float]) -> dict[str, float]:
