@@ -309,7 +309,10 @@ def test_namespaces_expand_relative_and_private_names(wire: Any) -> None:
     assert datas(relative.wait(lambda items: len(items) >= 1)) == ["x"]
     assert datas(private.wait(lambda items: len(items) >= 1)) == ["y"]
     graph = observer.context.graph
-    assert graph.wait_for(lambda es: any(e.node_name == "n" and e.namespace == "/a/b" for e in es),
+    # The node and each of its publishers are discovered one by one (on DDS the node from
+    # ros_discovery_info, its endpoints from DDS's built-in topics): wait for all three.
+    assert graph.wait_for(lambda es: any(e.node_name == "n" and e.namespace == "/a/b" for e in es)
+                          and {"/a/b/x", "/a/b/n/y"} <= {e.topic for e in es if e.kind is EntityKind.PUBLISHER},
                           wire.spec.graph_deadline_s)
     topics = dict(observer.get_topic_names_and_types())
     assert topics["/a/b/x"] == [STRING] and topics["/a/b/n/y"] == [STRING]
