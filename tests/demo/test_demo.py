@@ -2,8 +2,8 @@
 
 The recording is read back here with rosbags (not robotmodel's reader), and the offline
 answer the demo prints is recomputed from its raw /tf and /tf_static messages. The recording is
-then played back with ``bag play --clock`` (issue 22's must-show 3) into a sim-time tf2_echo and
-view_frames, on the one demo run this file's first test makes (a demo run takes ~20 s here).
+then played back with ``bag play --clock`` (issue 22's must-show 3) into a sim-time tf2_echo,
+view_frames and view, on the one demo run this file's first test makes (a demo run takes ~20 s here).
 """
 
 from __future__ import annotations
@@ -22,11 +22,13 @@ import numpy as np
 import pytest
 from livebus import Bus, Proc
 from procscan import assert_none_left
+from robotmodel.robots import path as robot_path
 from rosbags.highlevel import AnyReader
-from viewerhelpers import READY, is_robot_grey, png_pixels
+from viewerhelpers import HIDE_HELPERS, READY, grey_points, is_robot_grey, png_pixels, robot_fraction
 
 from robotmodel.demo import VIEWER_CAMERA
-from robotmodel.viewer import camera_spec
+from robotmodel.model import load
+from robotmodel.viewer import Browser, camera_spec
 
 DEMO = [sys.executable, "-m", "robotmodel.cli.main", "demo", "--no-browser"]
 
@@ -132,16 +134,21 @@ def test_demo_runs_headless_and_leaves_its_files(tmp_path: Path, capsys: pytest.
 
 def _replay_with_clock(mcap: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     """``bag play --clock`` of the demo's recording: a tf2_echo with ``use_sim_time`` prints what ``tf2_echo --bag
-    --time`` says for the same instants, and a view_frames with it dates its tree inside the recording."""
+    --time`` says for the same instants, a view_frames with it dates its tree inside the recording, and a
+    ``view --tf`` with it draws the robot where the recorded drive ends (a screenshot)."""
     from recording.test_play import echo_blocks
     from robotmodel.cli.main import main
 
     with AnyReader([mcap]) as reader:
         start, end = reader.start_time, reader.end_time
     sim = ("--ros-args", "-p", "use_sim_time:=true")
+    diffbot = robot_path("diffbot.urdf.xacro")
     bus = Bus(tmp_path, "dds")
     try:
         echo = bus.robotmodel("tf2_echo", "map", "base_footprint", *sim)
+        view = bus.robotmodel("view", str(diffbot), "--tf", "--fixed-frame", "odom", "--track", "base_footprint",
+                              "--port", "0", *sim)
+        url = view.wait_line(r"^http://127\.0\.0\.1:\d+/(?= \(|$)", timeout=120).group(0)
         echo.wait_line("Waiting for transform", stream="err")
         play = bus.robotmodel("bag", "play", str(mcap), "--clock", "100", "-r", "4")
         play.wait_line("Playing", timeout=60, stream="err")
@@ -149,8 +156,27 @@ def _replay_with_clock(mcap: Path, tmp_path: Path, capsys: pytest.CaptureFixture
         play.wait_line("Playback finished", timeout=60, stream="err")
         assert frames.popen.wait(60) == 0, frames.err[-5:]
         echo.stop()
+        # The viewer, started before the replay with nothing on /tf, draws the robot where the recorded drive
+        # ends (more than a metre from the origin): it followed the played /tf.
+        _, transforms = _read(mcap)
+        odom = max((s, v) for s, p, c, v, _ in transforms if (p, c) == ("odom", "base_footprint"))[1]
+        final = _matrix(*odom)
+        assert np.hypot(*final[:2, 3]) > 1.0
+        with Browser(timeout=60) as browser:
+            browser.navigate(url)
+            browser.wait_for(READY, timeout=60)
+            browser.evaluate(HIDE_HELPERS)
+            deadline = time.monotonic() + 30
+            while not np.allclose(np.asarray(browser.evaluate(_PAGE_POSES)["root"]).reshape(4, 4).T, final,
+                                  atol=1e-4):
+                assert time.monotonic() < deadline, "the viewer never showed the drive's last pose"
+                time.sleep(0.2)
+            png = browser.screenshot()
+            (tmp_path / "replay.png").write_bytes(png)  # kept for a look when this fails
+            hits, grey_corners = robot_fraction(browser, png, grey_points(load(diffbot), {}))
     finally:
         bus.reap()
+    assert hits >= 0.7 and grey_corners == 0.0, (hits, grey_corners)  # drawn there, in a tracking camera's view
     blocks = echo_blocks(echo.out)
     assert len(blocks) >= 3, echo.out
     capsys.readouterr()
@@ -228,8 +254,6 @@ def test_viewer_drives_the_robot_to_where_tf_says_it_ended(tmp_path: Path) -> No
     base_link: after the odometry pattern has ended, the page shows the robot at the recorded final
     odom -> base_footprint, base_link where the recorded static transform puts it, and the camera
     looking at base_link from the demo's offset."""
-    from robotmodel.viewer import Browser
-
     out = tmp_path / "demo"
     proc = Proc([*DEMO, "--duration", "60", "--time-scale", "5", "--output", str(out)], _env(), tmp_path)
     try:
