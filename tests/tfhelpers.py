@@ -40,3 +40,19 @@ def msg_matrix(msg) -> np.ndarray:
                  [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]]
     m[:3, 3] = [tr.x, tr.y, tr.z]
     return m
+
+
+def compose(transforms, root: str) -> dict[str, np.ndarray]:
+    """Each child's pose in ``root`` from per-joint parent→child transforms (no robotmodel code)."""
+    by_child = {t.child_frame_id: t for t in transforms}
+    poses = {root: np.eye(4)}
+
+    def pose(frame: str) -> np.ndarray:
+        if frame not in poses:
+            t = by_child[frame]
+            poses[frame] = pose(t.header.frame_id) @ msg_matrix(t)
+        return poses[frame]
+
+    for child in by_child:
+        pose(child)
+    return poses

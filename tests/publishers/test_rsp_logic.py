@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 from conftest import BUNDLED, ERD_ROBOTS
 from handfk import HandFK
-from tfhelpers import msg_matrix
+from tfhelpers import compose, msg_matrix
 
 from robotmodel.kinematics import KinematicModel, KinematicState
 from robotmodel.model import load
@@ -34,20 +34,6 @@ def stamp_header(stamp_ns: int):
     return Header(stamp=stamp(stamp_ns))
 
 
-def compose(transforms, root: str) -> dict[str, np.ndarray]:
-    """Each child's pose in ``root`` from per-joint parent→child transforms (no robotmodel code)."""
-    by_child = {t.child_frame_id: t for t in transforms}
-    poses = {root: np.eye(4)}
-
-    def pose(frame: str) -> np.ndarray:
-        if frame not in poses:
-            t = by_child[frame]
-            poses[frame] = pose(t.header.frame_id) @ msg_matrix(t)
-        return poses[frame]
-
-    for child in by_child:
-        pose(child)
-    return poses
 
 
 @pytest.fixture(scope="module")

@@ -19,7 +19,7 @@ import numpy as np
 import pinocchio as pin
 import pytest
 from conftest import ERD_ROBOTS, erd_urdfs
-from tfhelpers import msg_matrix
+from tfhelpers import compose
 
 from robotmodel.bus import ros1_codec
 from robotmodel.kinematics import KinematicModel
@@ -37,22 +37,6 @@ PANDA = ERD_ROBOTS / "panda_description/urdf/panda.urdf"
 TALOS = ERD_ROBOTS / "talos_data/robots/talos_full_v2.urdf"
 JOINT_STATE = ros1_codec(JointState)
 TF = ros1_codec(TFMessage)
-
-
-def compose(transforms, root: str) -> dict[str, np.ndarray]:
-    """Each child's pose in ``root`` from per-joint parent→child transforms (no robotmodel code)."""
-    by_child = {t.child_frame_id: t for t in transforms}
-    poses = {root: np.eye(4)}
-
-    def pose(frame: str) -> np.ndarray:
-        if frame not in poses:
-            t = by_child[frame]
-            poses[frame] = pose(t.header.frame_id) @ msg_matrix(t)
-        return poses[frame]
-
-    for child in by_child:
-        pose(child)
-    return poses
 
 
 def frame(rng: random.Random) -> str:

@@ -192,6 +192,17 @@ def test_play_words(words: list[str], clock: float | None, rate: float, offset_n
     assert options == PlayOptions(rate=rate, loop=loop, start_offset_ns=offset_ns, topics=topics, clock_hz=clock)
 
 
+def drawn_step(frames: dict[str, Any]) -> int | None:
+    """The drive's step k whose recorded pose base_footprint is drawn at (None: not drawn, or not a recorded pose)."""
+    m = frames.get("base_footprint")
+    if m is None:
+        return None
+    k = round(m[0, 3] / 0.05)
+    yaw = 0.01 * k
+    recorded = [[math.cos(yaw), -math.sin(yaw), 0.05 * k], [math.sin(yaw), math.cos(yaw), 0.0]]
+    return k if 0 <= k < STEPS and bool((abs(m[:2, [0, 1, 3]] - recorded) < 1e-5).all()) else None
+
+
 def test_view_tf_replays_the_drive(tmp_path: Path) -> None:
     """``view --tf`` with ``use_sim_time`` draws the drive played with ``--clock``: base_footprint in odom at
     recorded poses, moving as recorded; a screenshot shows the robot where the drive ends."""
@@ -207,23 +218,13 @@ def test_view_tf_replays_the_drive(tmp_path: Path) -> None:
     path = write(tmp_path / "drive", "mcap", msgs)
     bus = Bus(tmp_path, "zenoh")
 
-    def step(frames: dict[str, Any]) -> int | None:
-        """The drive's step k whose pose base_footprint is drawn at (None: not drawn, or not a recorded pose)."""
-        m = frames.get("base_footprint")
-        if m is None:
-            return None
-        k = round(m[0, 3] / 0.05)
-        yaw = 0.01 * k
-        recorded = [[math.cos(yaw), -math.sin(yaw), 0.05 * k], [math.sin(yaw), math.cos(yaw), 0.0]]
-        return k if 0 <= k < STEPS and bool((abs(m[:2, [0, 1, 3]] - recorded) < 1e-5).all()) else None
-
     try:
         view = bus.robotmodel("view", str(diffbot), "--tf", "--fixed-frame", "odom", "--track", "base_footprint",
                               "--port", "0", "--ros-args", "-p", "use_sim_time:=true")
         url = view.wait_line(r"^http://127\.0\.0\.1:\d+/(?= \(|$)", timeout=120).group(0)
         looping = bus.robotmodel("bag", "play", str(path), "--loop", "-r", "2", "--clock")
-        first = step(viewer_state(url, lambda s: step(s[1]) is not None)[1])
-        later = step(viewer_state(url, lambda s: step(s[1]) not in (None, first))[1])
+        first = drawn_step(viewer_state(url, lambda s: drawn_step(s[1]) is not None)[1])
+        later = drawn_step(viewer_state(url, lambda s: drawn_step(s[1]) not in (None, first))[1])
         assert first is not None and later is not None and later != first
         looping.kill()
         # The last second once more, so that the robot stays where the drive ends (k = STEPS - 1) for the screenshot.

@@ -10,28 +10,15 @@ replay is drawn again from its start on each pass.
 from __future__ import annotations
 
 import itertools
-import math
 import re
 from pathlib import Path
-from typing import Any
 
 import pytest
 from livebus import Bus
 from recording.bagfiles import NS, Msg, write
-from recording.test_play import STEPS, T0, drive
+from recording.test_play import T0, drawn_step, drive
 
 SIM = ("--ros-args", "-p", "use_sim_time:=true")
-
-
-def _step(frames: dict[str, Any]) -> int | None:
-    """The drive's step k whose recorded pose base_footprint is drawn at (None: not drawn, or not a recorded pose)."""
-    m = frames.get("base_footprint")
-    if m is None:
-        return None
-    k = round(m[0, 3] / 0.05)
-    yaw = 0.01 * k
-    recorded = [[math.cos(yaw), -math.sin(yaw), 0.05 * k], [math.sin(yaw), math.cos(yaw), 0.0]]
-    return k if 0 <= k < STEPS and bool((abs(m[:2, [0, 1, 3]] - recorded) < 1e-5).all()) else None
 
 
 @pytest.mark.parametrize("wire", ["dds", "zenoh"])
@@ -51,8 +38,8 @@ def test_view_tf_draws_each_pass_of_a_looping_replay(tmp_path: Path, wire: str) 
         url = view.wait_line(r"^http://127\.0\.0\.1:\d+/(?= \(|$)", timeout=120).group(0)
         bus.robotmodel("bag", "play", str(path), "--clock", "100", "--loop")
         # (viewer_state gives the last state it saw when its deadline passes: checked below)
-        late = _step(viewer_state(url, lambda s: _step(s[1]) in range(3 * last // 4, last + 1))[1])
-        again = _step(viewer_state(url, lambda s: _step(s[1]) in range(last // 4 + 1), timeout=20)[1])
+        late = drawn_step(viewer_state(url, lambda s: drawn_step(s[1]) in range(3 * last // 4, last + 1))[1])
+        again = drawn_step(viewer_state(url, lambda s: drawn_step(s[1]) in range(last // 4 + 1), timeout=20)[1])
         assert late is not None and again is not None and again <= last // 4 < late, (late, again)
         view.wait_line("Detected jump back in time. Clearing TF buffer.", timeout=10, stream="err")
     finally:
