@@ -12,7 +12,9 @@ from __future__ import annotations
 
 import math
 import re
+import signal
 import threading
+import time
 
 import numpy as np
 import robotmodel.robots
@@ -63,13 +65,26 @@ def test_final_pose_equals_the_integral(live):
     with Node("odometry_check") as node, TransformListener(buffer, node):
         node.create_subscription(Odometry, "/odom", on_odom, 1000)
         rsp = live.robotmodel("robot-state-publisher", str(robotmodel.robots.path("diffbot.urdf.xacro")))
-        sim = live.example("sensor_simulator.py", "--time-scale", SCALE, "--duration", "45")
+        # The simulator runs until told to stop, not for a fixed time: a controller slow to start on a
+        # loaded machine would otherwise still be driving when the simulator's time ran out.
+        sim = live.example("sensor_simulator.py", "--time-scale", SCALE)
         sim.wait_line("integrating")
         ctl = live.example("robot_controller.py", "--time-scale", SCALE, "--duration", "32")
         ctl.wait_line("stopped", timeout=60)
         assert ctl.popen.wait(30) == 0
+        with lock:
+            sent = len(odoms)
+        # Stopped once an /odom after the controller's exit shows its last (zero) command integrated.
+        deadline = time.monotonic() + 30
+        while True:
+            with lock:
+                later = odoms[sent:]
+            if any(m.twist.twist.linear.x == 0.0 and m.twist.twist.angular.z == 0.0 for m in later):
+                break
+            assert time.monotonic() < deadline, "the simulator never integrated the controller's stop"
+            time.sleep(0.05)
+        assert sim.stop(signal.SIGINT, timeout=30) == 0
         final = _final(sim)
-        assert sim.popen.wait(30) == 0
         with lock:
             received = list(odoms)
         wheels = {n: buffer.lookup_transform("base_link", n, Time()) for n in ("left_wheel", "right_wheel")}
