@@ -48,14 +48,15 @@ def register(sub: Any) -> None:
                       help="output all elements of arrays, bytes and strings longer than --truncate-length")
     echo.add_argument("--truncate-length", "-l", type=_unsigned, default=_TRUNCATE_LENGTH,
                       help=f"the length to truncate arrays, bytes and strings to (default: {_TRUNCATE_LENGTH})")
-    echo.add_argument("--no-arr", action="store_true", help="don't print array fields of messages")
-    echo.add_argument("--no-str", action="store_true", help="don't print string fields of messages")
+    echo.add_argument("--no-arr", "--noarr", action="store_true", help="don't print array fields of messages")
+    echo.add_argument("--no-str", "--nostr", action="store_true", help="don't print string fields of messages")
     echo.add_argument("--flow-style", action="store_true", help="print collections in the flow style")
     echo.add_argument("--no-lost-messages", action="store_true", help="don't report when a message is lost")
     echo.add_argument("--raw", action="store_true", help="echo the raw binary representation")
     echo.add_argument("--filter", dest="filter_expr", metavar="FILTER_EXPR",
                       help="Python expression to filter messages that are printed (builtins and m, the message)")
     echo.add_argument("--once", action="store_true", help="print the first message received and then exit")
+    echo.add_argument("-n", dest="count", type=int, metavar="COUNT", help="rostopic's: print COUNT messages, then exit")
     echo.add_argument("--timeout", type=float, metavar="N", default=None,
                       help="set a timeout in seconds for waiting")
     echo.add_argument("--include-message-info", "-i", action="store_true", help="shows the associated message info")
@@ -84,7 +85,7 @@ def run_echo(args: argparse.Namespace) -> int:
                       include_message_info=args.include_message_info)
     overrides = (args.qos_reliability, args.qos_durability, args.qos_depth, args.qos_history, args.qos_liveliness,
                  args.qos_liveliness_lease_duration_seconds)
-    return run_topic_echo(args.topic_name, args.message_type, form=form, raw=args.raw, once=args.once,
+    return run_topic_echo(args.topic_name, args.message_type, form=form, raw=args.raw, once=args.once, count=args.count,
                           timeout=args.timeout, filter_expr=args.filter_expr,
                           qos=qos_of(args) if any(v is not None for v in overrides) else None,
                           qos_profile=qos_from_short_keys(args.qos_profile), connect=args.connect,

@@ -70,14 +70,15 @@ class EchoFormat:
 
 
 def run_topic_echo(topic_name: str, message_type: str | None = None, *, form: EchoFormat | None = None,
-                   raw: bool = False, once: bool = False, timeout: float | None = None,
+                   raw: bool = False, once: bool = False, count: int | None = None, timeout: float | None = None,
                    filter_expr: str | None = None, qos: QoS | None = None, qos_profile: QoS | None = None,
                    connect: Sequence[str] = (), spin_time: float = DEFAULT_SPIN_TIME, namespace: str = "/",
                    ros: RosArgs | None = None) -> int:
-    """``ros2 topic echo``: print each message until SIGINT/SIGTERM, ``once`` or ``timeout``; the exit code.
+    """``ros2 topic echo``: print each message until SIGINT/SIGTERM, ``once``, ``count`` or ``timeout``; the exit code.
 
-    ``qos``: the QoS the ``--qos-*`` overrides name (else ``qos_profile``, the preset, adjusted to the
-    publishers); a relative ``topic_name`` resolves under ``namespace``.
+    ``count``: rostopic's ``-n``, that many messages printed. ``qos``: the QoS the ``--qos-*``
+    overrides name (else ``qos_profile``, the preset, adjusted to the publishers); a relative
+    ``topic_name`` resolves under ``namespace``.
     """
     from robotmodel.bus import Node, codec_for
     from robotmodel.errors import BusError
@@ -90,7 +91,7 @@ def run_topic_echo(topic_name: str, message_type: str | None = None, *, form: Ec
     stop = stop_on_signals()
     lock = threading.Lock()
     problems: list[str] = []
-    received = [0]
+    received, printed = [0], [0]
     name = ros.node_name or "_robotmodel_topic_echo"
     warn_ignored_params(ros, namespace, name)
     with Node(name, namespace, connect=list(connect), remappings=ros.remaps) as node:
@@ -134,7 +135,8 @@ def run_topic_echo(topic_name: str, message_type: str | None = None, *, form: Ec
                     print(f"{head}{value!r}" if head else value, end="\n---\n", flush=True)
                 else:
                     print(form.text(value, info), end="", flush=True)
-                if once:
+                printed[0] += 1
+                if once or (count is not None and printed[0] >= count):
                     stop.set()
 
         try:

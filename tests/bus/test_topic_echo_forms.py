@@ -115,13 +115,16 @@ def test_live_echo_csv_with_filter_and_message_info(procs: Any, bus_wire: str) -
         thread = threading.Thread(target=loop, daemon=True)
         thread.start()
         try:
-            echo = procs.cli("topic", "echo", "/echo_forms", "--csv", "-i", "--filter", "m.data.startswith('b')",
-                             "--spin-time", "1")
-            assert echo.wait_for(lambda ls: len(ls) >= 3, DEADLINE_S), echo.errors
+            # rostopic's -n: three printed, then it exits by itself.
+            echo = procs.cli("rostopic", "echo", "/echo_forms", "--csv", "-i", "--filter", "m.data.startswith('b')",
+                             "-n", "3", "--spin-time", "1")
+            assert echo.popen.wait(DEADLINE_S) == 0, echo.errors
+            assert echo.wait_for(lambda ls: len(ls) >= 3, 5), echo.errors
         finally:
             stop.set()
             thread.join(5)
-    rows = [line.split(",") for line in echo.lines[:3]]
+    assert len(echo.lines) == 3, echo.lines
+    rows = [line.split(",") for line in echo.lines]
     for source, received, published, reception, data in rows:
         assert data.startswith("b") and int(data[1:]) % 2 == 1, rows
         assert 0 < int(source) <= int(received) and int(published) > 0 and int(reception) > 0
