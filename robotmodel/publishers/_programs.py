@@ -264,7 +264,11 @@ def _follow_descriptions(topic: Any, rsp: Any, stop: Any, log: Any) -> None:
 def _run_ros1_rsp(file: str | None, mappings: Mapping[str, str], package_paths: Sequence[str | os.PathLike[str]],
                   untrusted: bool, publish_frequency: float | None, frame_prefix: str, ignore_timestamp: bool,
                   connect: Sequence[str], namespace: str, name: str, ros: RosArgs, log: Any) -> int:
-    """ROS 1's robot_state_publisher: ``~publish_frequency`` (50), ``~tf_prefix`` (searched), robot from the server."""
+    """ROS 1's robot_state_publisher: its private parameters and the robot from the server.
+
+    ``~publish_frequency`` (50), ``~tf_prefix`` (searched), ``~ignore_timestamp``,
+    ``~use_tf_static`` (true; false: the fixed joints on /tf, 0.5 s ahead).
+    """
     from robotmodel.bus import Node, TopicClock, node_clock
     from robotmodel.publishers._ros1params import private_params, tf_prefix_text
     from robotmodel.publishers._rsp import RobotStatePublisher
@@ -290,6 +294,7 @@ def _run_ros1_rsp(file: str | None, mappings: Mapping[str, str], package_paths: 
         prefix = str(param(prefix_key, (str,), "")) if prefix_key else ""
         settings: dict[str, Any] = {"publish_frequency": check_publish_frequency(hz),
                     "ignore_timestamp": bool(param("~ignore_timestamp", (bool,), ignore_timestamp)),
+                    "use_tf_static": bool(param("~use_tf_static", (bool,), True)),
                     "frame_prefix": tf_prefix_text(prefix) if prefix else frame_prefix}
         if desc is None:
             desc = description_parameter(node, log)

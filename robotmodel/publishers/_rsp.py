@@ -23,6 +23,9 @@ from robotmodel.time import Clock, SystemClock
 __all__ = ["RobotStatePublisher"]
 
 
+# ROS 1's RSP stamps fixed joints sent on /tf this far ahead of now (they stay valid until the next).
+_AHEAD_NS = 500_000_000
+
 class RobotStatePublisher:
     """ROS 2's robot_state_publisher as an object: give it a robot and a bus node.
 
@@ -31,6 +34,10 @@ class RobotStatePublisher:
     the fixed joints on ``/tf_static`` (latched); then each JointState on ``joint_states``
     (in the node's namespace, as RSP subscribes) gives the moving joints on ``/tf``. See
     :class:`RobotStateLogic` for the rules.
+
+    ``use_tf_static`` False is ROS 1's ``~use_tf_static:=false``: nothing on /tf_static; the
+    fixed joints go on /tf instead, every 1/``publish_frequency`` s (at least once a second),
+    stamped half a second ahead of "now", as ROS 1's RSP sends them.
 
     ``bus`` is a :class:`robotmodel.bus.Node`, left open on :meth:`close`; without one the
     publisher opens a node named ``robot_state_publisher`` (``node_options`` such as
@@ -47,6 +54,7 @@ class RobotStatePublisher:
         publish_frequency: float = 20.0,
         frame_prefix: str = "",
         ignore_timestamp: bool = False,
+        use_tf_static: bool = True,
         clock: Clock | None = None,
         logger: logging.Logger | None = None,
         subscribe: bool = True,
@@ -57,6 +65,8 @@ class RobotStatePublisher:
         self.clock: Clock = clock or SystemClock()
         self._lock = threading.Lock()
         self._closed = False
+        self._use_tf_static = use_tf_static
+        self._stop_fixed = threading.Event()
         self._decoder = JointStateDecoder()
         self._bad_payload = Every(self.logic.log)
         self._owned = bus is None
@@ -97,8 +107,19 @@ class RobotStatePublisher:
     def _publish_setup(self) -> None:
         if self._description_pub is not None:
             self._description_pub.publish(String(data=self.logic.description_text))
-        self._tf_static.send_transform(self.logic.fixed_transforms(self.clock.now().nanoseconds))
+        if self._use_tf_static:
+            self._tf_static.send_transform(self.logic.fixed_transforms(self.clock.now().nanoseconds))
+        else:
+            threading.Thread(target=self._publish_fixed, name="rsp-fixed", daemon=True).start()
         self.logic.log.info("Robot initialized")
+
+    def _publish_fixed(self) -> None:
+        """ROS 1's RSP without /tf_static: the fixed joints on /tf on its timer, stamped 0.5 s ahead."""
+        while not self._stop_fixed.is_set():
+            transforms = self.logic.fixed_transforms(self.clock.now().nanoseconds + _AHEAD_NS)
+            if transforms:
+                self._tf_pub.publish(TFMessage(transforms=transforms))
+            self._stop_fixed.wait(1.0 / max(self.logic.publish_frequency, 1.0))
 
     # -- driving ----------------------------------------------------------------------------------
     def _on_raw(self, raw: Any) -> None:
@@ -238,6 +259,7 @@ class RobotStatePublisher:
             if self._closed:
                 return
             self._closed = True
+        self._stop_fixed.set()
         for server in getattr(self, "_param_servers", []):
             server.close()
         for name in ("_sub", "_tf_pub", "_tf_static", "_description_pub"):

@@ -8,6 +8,8 @@ Neither publishes a /robot_description topic (ROS 1's RSP only reads the paramet
 
 from __future__ import annotations
 
+import itertools
+import statistics
 import sys
 from pathlib import Path
 
@@ -57,3 +59,37 @@ def test_tf_prefix_and_topics_as_the_real_rsp(ros1: Ros1World) -> None:
     topics_of = [[r for r in ros1.registrations_of(f"/r1/{n}") if not r.startswith("srv ")]
                  for n in ("rm_rsp", "robot_state_publisher")]
     assert topics_of[0] == topics_of[1], topics_of
+
+
+def test_use_tf_static_false_as_the_real_rsp(ros1: Ros1World) -> None:
+    """``_use_tf_static:=false``: neither RSP sends /tf_static; both send the fixed joints on /tf at
+    ``~publish_frequency``, stamped half a second after they arrive (the real one measured beside ours)."""
+    setter = ros1.node("setter").params
+    setter.set_param("/robot_description", load(ARM).source_text)
+    frames = ros1.start(SYSTEM_PYTHON, str(HERE / "rospy_tf_frames.py"), "--all")
+    frames.wait_line("^ready", 60)
+    ros1.env["ROS_VERSION"] = "1"
+    words = ("_use_tf_static:=false", "_publish_frequency:=10")
+    ros1.start(REAL_RSP, "__ns:=/r1", *words)
+    ros1.start(sys.executable, "-m", "robotmodel.cli.main", "robot_state_publisher", "__ns:=/r2", *words)
+    fixed = ("world", "arm_base_link")  # arm.urdf.xacro's fixed joint
+
+    def rows(caller: str) -> list[tuple[str, float, float]]:
+        out = []
+        for line in frames.lines[1:]:
+            topic, who, parent, child, stamp, arrived = line.split()
+            if who == caller and (parent, child) == fixed:
+                out.append((topic, float(stamp), float(arrived)))
+        return out
+
+    callers = ("/r1/robot_state_publisher", "/r2/robot_state_publisher")
+    wait_until(lambda: all(len(rows(c)) >= 6 for c in callers), 60, "six fixed transforms from each RSP on /tf")
+    for caller in callers:
+        got = rows(caller)[1:6]  # the first may come from a timer started before the reader connected
+        assert {topic for topic, _, _ in rows(caller)} == {"/tf"}, (caller, rows(caller))
+        # Stamped 0.5 s after sending, so never more than that after arriving; a late delivery on a
+        # loaded machine only shrinks it, hence the median.
+        ahead = [stamp - arrived for _, stamp, arrived in got]
+        assert max(ahead) < 0.505 and statistics.median(ahead) > 0.3, (caller, ahead)
+        gaps = [b[1] - a[1] for a, b in itertools.pairwise(got)]
+        assert 0.07 < statistics.median(gaps) < 0.15, (caller, gaps)  # 10 Hz, by the stamps
