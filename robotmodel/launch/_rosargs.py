@@ -22,12 +22,10 @@ __all__ = ["ros_tail"]
 _COMMAND_NAME = {
     "robot_state_publisher": "robot_state_publisher",
     "joint_state_publisher": "joint_state_publisher",
-    "joint_state_publisher_gui": "robotmodel_view",
+    "joint_state_publisher_gui": "joint_state_publisher_gui",
     "rviz": "robotmodel_view",
     "static_transform_publisher": None,
 }
-# The name the ROS executable gives itself when the launch file gives none, where ours differs.
-_ROS_NAME = {"joint_state_publisher_gui": "joint_state_publisher_gui"}
 
 
 def ros_tail(spec: ProcessSpec, node: NodeDecl, consumed: frozenset[str], notes: list[str]) -> ProcessSpec:
@@ -38,7 +36,7 @@ def ros_tail(spec: ProcessSpec, node: NodeDecl, consumed: frozenset[str], notes:
     refuses) is named in ``notes``.
     """
     words = _split_ros_args(node)
-    name = node.name if node.named else _ROS_NAME.get(spec.kind)
+    name = node.name if node.named else None
     if name is not None and name != _COMMAND_NAME.get(spec.kind):
         words += ["-r", f"__node:={name}"]
     if node.namespace != "/":

@@ -151,14 +151,15 @@ class LiveViewer:
                  tf_frames: str | Sequence[str] = "all", node: Any = None, node_name: str = "robotmodel_view",
                  namespace: str = "/", connect: Sequence[str] = (), remappings: Sequence[str] = (),
                  port: int | None = None, make_viewer: Callable[[RobotDescription], Viewer] | None = None,
-                 jsp_options: Mapping[str, Any] | None = None, use_sim_time: bool = False) -> None:
+                 jsp_options: Mapping[str, Any] | Callable[[Any], Mapping[str, Any]] | None = None,
+                 use_sim_time: bool = False) -> None:
         self.description = description
         self.use_sim_time = use_sim_time
         self.follow, self.tf, self.publish = follow, tf, publish
         self.fixed_frame, self.track, self.tf_frames = fixed_frame, track, tf_frames
         self.viewer: Viewer | None = None
         self._make_viewer = make_viewer or (lambda d: _default_viewer(d, port))
-        self._jsp_options = dict(jsp_options or {})
+        self._jsp_options: dict[str, Any] = {}
         self._stop = threading.Event()
         self._closers: list[Any] = []
         self.node = node
@@ -167,6 +168,11 @@ class LiveViewer:
 
             self.node = Node(node_name, namespace, connect=list(connect), remappings=list(remappings))
             self._closers.append(self.node)
+        try:
+            self._jsp_options = dict(jsp_options(self.node) if callable(jsp_options) else jsp_options or {})
+        except BaseException:
+            self.close()
+            raise
         if description is None and self.node is not None:
             description = _parameter_description(self.node)
             self.description = description
@@ -266,11 +272,13 @@ def _page_line(url: str, node_name: str | None, *, publish: bool, follow: bool, 
 
 
 def serve_live(options: ViewOptions, desc: RobotDescription | None, initial: Mapping[str, float], frames: Any,
-               *, publish: bool = False, jsp_options: Mapping[str, Any] | None = None) -> int:
+               *, publish: bool = False,
+               jsp_options: Mapping[str, Any] | Callable[[Any], Mapping[str, Any]] | None = None) -> int:
     """Serve the viewer with ``options`` until SIGINT/SIGTERM, printing its URL; ``desc=None``: from the bus.
 
     ``jsp_options`` are the publishing JointStatePublisher's settings from the ROS parameters
-    (the caller has read them); without them every parameter override is named as ignored.
+    (the caller has read them, or a function reading them from the node once it is up: ROS 1's
+    parameter server); without them every parameter override is named as ignored.
     Returns the exit code (0).
     """
     from robotmodel.rcl import RosArgs, node_params, warn_ignored_params

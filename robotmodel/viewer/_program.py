@@ -54,13 +54,35 @@ def run_view(options: ViewOptions) -> int:
 
 
 def run_joint_state_publisher_gui(options: ViewOptions) -> int:
-    """Serve the page with publishing on, joint_state_publisher's parameters applied; returns the exit code."""
+    """Serve the page with publishing on, joint_state_publisher's parameters applied; returns the exit code.
+
+    The node is ``joint_state_publisher_gui`` unless renamed, as ROS's. On ROS 1 the parameters
+    are read from the parameter server once the node is up, as ROS 1's reads them there.
+    """
+    from dataclasses import replace
+
     from robotmodel.publishers import jsp_settings
-    from robotmodel.rcl import RosArgs, logger_name, node_params, ros_log
+    from robotmodel.rcl import RosArgs, logger_name, node_params, ros1_wire, ros_log
     from robotmodel.viewer._live import serve_live
 
-    name = options.node_name or "robotmodel_view"
+    name = options.node_name or "joint_state_publisher_gui"
+    options = replace(options, node_name=name)
     ros = options.ros or RosArgs()
+    initial = parse_joint_words(list(options.joint))
+    if ros1_wire():
+        from robotmodel.publishers._ros1params import private_params, ros1_jsp_settings
+
+        def from_server(node: Any) -> dict[str, Any]:
+            settings = ros1_jsp_settings(private_params(node, ros, options.namespace, name))
+            initial.update(settings.pop("zeros"))  # before the page is built: the sliders start there
+            return settings
+
+        try:
+            return serve_live(options, _load(options), initial, frames_spec(options.frames), publish=True,
+                              jsp_options=from_server)
+        except RosArgsError as exc:
+            print(f"robotmodel joint-state-publisher-gui: error: {exc}", file=sys.stderr)
+            return 2
     try:
         # joint_state_publisher_gui runs joint_state_publisher inside: the same parameters.
         settings = jsp_settings(node_params(ros, options.namespace, name),
@@ -68,7 +90,6 @@ def run_joint_state_publisher_gui(options: ViewOptions) -> int:
     except RosArgsError as exc:
         print(f"robotmodel joint-state-publisher-gui: error: {exc}", file=sys.stderr)
         return 2
-    initial = parse_joint_words(list(options.joint))
     initial.update(settings.pop("zeros"))  # zeros.JOINT wins over --joint, as a parameter over its flag
     return serve_live(options, _load(options), initial, frames_spec(options.frames), publish=True,
                       jsp_options=settings)

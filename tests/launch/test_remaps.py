@@ -144,9 +144,8 @@ def test_ros2_set_remap_scopes_and_node_remaps(pkg, tmp_path):
         "/in_include": ("-r", "__node:=in_include", "-r", "joint_states:=/arm/joint_states", "-r", "tf:=tf_r2",
                         "-r", "from_include:=leaks"),
         # An include does not scope: its <set_remap> is still in force after it. Unnamed, the GUI
-        # takes joint_state_publisher_gui's own name.
-        "/joint_state_publisher_gui": ("-r", "__node:=joint_state_publisher_gui",
-                                       "-r", "joint_states:=/arm/joint_states", "-r", "tf:=tf_r2",
+        # takes joint_state_publisher_gui's own name, the command's default (no __node rule).
+        "/joint_state_publisher_gui": ("-r", "joint_states:=/arm/joint_states", "-r", "tf:=tf_r2",
                                        "-r", "from_include:=leaks"),
     }
 

@@ -162,11 +162,12 @@ def test_viewer_and_sliders_use_their_namespace(live, package: Path):
         while True:
             nodes = set(node.get_node_names_and_namespaces())
             topics = {name for name, _ in node.get_topic_names_and_types()}
-            if ({("robotmodel_view", "/r1"), ("robotmodel_view", "/r2")} <= nodes and "/r1/joint_states" in topics) \
+            if ({("robotmodel_view", "/r1"), ("joint_state_publisher_gui", "/r2")} <= nodes
+                    and "/r1/joint_states" in topics) \
                     or time.monotonic() > deadline:
                 break
             time.sleep(0.05)
-    assert {("robotmodel_view", "/r1"), ("robotmodel_view", "/r2")} <= nodes
+    assert {("robotmodel_view", "/r1"), ("joint_state_publisher_gui", "/r2")} <= nodes  # the GUI named as ROS's
     assert "/r1/joint_states" in topics and "/joint_states" not in topics  # --follow's subscription
     for proc in (view, gui):
         assert proc.stop(signal.SIGINT) == 0, proc.err[-10:]

@@ -63,3 +63,23 @@ def test_jsp_settings_from_the_server_as_the_real_jsp(ros1: Ros1World) -> None:
     assert value["arm_wrist_yaw_joint"] == 1.1 * 2.0 + 0.1  # dependent_joints: follows the elbow
     rates = [statistics.median(b[0] - a[0] for a, b in itertools.pairwise(ms)) / 1e9 for ms in (real, ours)]
     assert abs(rates[1] - 1 / 40) < 0.01 and abs(rates[0] - 1 / 40) < 0.01, rates
+
+
+def test_gui_reads_its_settings_from_the_server(ros1: Ros1World) -> None:
+    """joint_state_publisher_gui on ROS 1: named as ROS's, its robot, ``~zeros`` (the sliders' start) and
+    ``~rate`` from the parameter server, as the GUI's joint_state_publisher inside it reads them."""
+    params = ros1.node("setter").params
+    params.set_param("/robot_description", load(ARM).source_text)
+    params.set_param("/joint_state_publisher_gui/zeros", {"arm_elbow_joint": 0.7})
+    params.set_param("/joint_state_publisher_gui/rate", 20)
+    echo = ros1.start(SYSTEM_PYTHON, str(HERE / "rospy_joint_echo.py"), "/joint_states")
+    echo.wait_line("^ready", 60)
+    ros1.env["ROS_VERSION"] = "1"
+    ros1.start(sys.executable, "-m", "robotmodel.cli.main", "joint_state_publisher_gui", "--port", "0")
+    wait_until(lambda: len(_messages(echo.lines, "/joint_states")) > 15, 60, "fifteen messages from the GUI")
+    got = _messages(echo.lines, "/joint_states")
+    names, positions, _, _ = got[-1][1]
+    assert dict(zip(names, positions, strict=True))["arm_elbow_joint"] == 0.7  # type: ignore[call-overload]
+    rate = statistics.median(b[0] - a[0] for a, b in itertools.pairwise(got)) / 1e9
+    assert abs(rate - 1 / 20) < 0.01, rate
+    assert "/joint_state_publisher_gui" in ros1.tool("rosnode", "list").split()
