@@ -157,13 +157,18 @@ class Player:
         def bag_now() -> int:
             return first + int((time.monotonic() - start) * rate * 1e9)
 
-        def wait_until(wall: float) -> bool:
-            """Sleep to ``wall``, publishing /clock on its ticks; False when stopped."""
+        def wait_until(wall: float, due_ns: int) -> bool:
+            """Sleep to ``wall``, publishing /clock on its ticks; False when stopped.
+
+            A tick never runs the clock past ``due_ns``, the recorded time of the message about
+            to be played: a player held up (a loaded machine) would otherwise send sim-time nodes
+            a time whose messages they have not had yet, even past the recording's end.
+            """
             nonlocal next_tick
             while not stop.is_set():
                 now = time.monotonic()
                 if period is not None and next_tick <= now:
-                    self._publish_clock(bag_now())
+                    self._publish_clock(min(bag_now(), due_ns))
                     next_tick = max(next_tick + period, now)
                     continue
                 if now >= wall:
@@ -172,7 +177,7 @@ class Player:
             return False
 
         for topic, t, data in self._messages(first):
-            if not wait_until(start + (t - first) / 1e9 / rate):
+            if not wait_until(start + (t - first) / 1e9 / rate, t):
                 return
             self._publish(topic, data)
 

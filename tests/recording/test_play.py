@@ -73,6 +73,37 @@ def test_every_format_plays_types_latching_selection_and_offset(tmp_path: Path, 
     assert late.transforms[0].child_frame_id == "laser" and late.transforms[0].transform.translation.z == 0.3
 
 
+def test_clock_never_runs_ahead_of_the_message_to_play(tmp_path: Path) -> None:
+    """A player held up (here by a subscriber that blocks the in-process delivery for 0.3 s, 6 s of
+    recording at -r 20) sends /clock no later than the next recorded message, never past the end."""
+    path = write(tmp_path / "drive", "mcap", drive())
+    ticks: list[int] = []
+    order: list[tuple[str, int]] = []
+    stalled = threading.Event()
+
+    def on_tf(m: Any) -> None:
+        t = m.transforms[0].header.stamp
+        order.append(("tf", t.sec * NS + t.nanosec))
+        if not stalled.is_set():
+            stalled.set()
+            time.sleep(0.3)  # the player's thread delivers this: it is held up as by a loaded machine
+
+    def on_clock(m: Any) -> None:
+        ns = m.clock.sec * NS + m.clock.nanosec
+        ticks.append(ns)
+        order.append(("clock", ns))
+
+    with Node("sub", backend="inprocess", domain_id=153) as node, Recording(path) as rec:
+        node.create_subscription("tf2_msgs/msg/TFMessage", "/tf", on_tf, 1000)
+        node.create_subscription("rosgraph_msgs/msg/Clock", "/clock", on_clock, 1000)
+        Player(rec, node, PlayOptions(rate=20.0, clock_hz=50.0, topics=("/tf",))).play(threading.Event())
+    assert stalled.is_set() and ticks and max(ticks) <= T0 + (STEPS - 1) * NS // 20
+    # Each tick is at most the time of the /tf message played after it.
+    for (kind, ns), later in itertools.pairwise(order):
+        if kind == "clock" and later[0] == "tf":
+            assert ns <= later[1], (ns, later)
+
+
 def test_loop_plays_again(tmp_path: Path) -> None:
     path = write(tmp_path / "drive", "mcap", drive()[:5])
     stop = threading.Event()
