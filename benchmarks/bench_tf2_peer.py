@@ -87,6 +87,34 @@ def cpu_per_call(fn: Callable[[], object], n: int, repeats: int) -> float:
     return statistics.median(cpus)
 
 
+def steady_costs(set_transform: Callable[[Any, str], object], msgs: dict[str, Any], stamps: list[Any],
+                 transforms: list[Any]) -> list[float]:
+    """CPU seconds per set_transform at each step: every frame's message re-stamped and given the step's transform.
+
+    Both sides run this (the peer under Debian's Python with rospy's messages, ours with robotmodel's).
+    """
+    per_step = []
+    for st, tr in zip(stamps, transforms, strict=False):
+        s0 = time.process_time()
+        for f in FRAMES:
+            m = msgs[f]
+            m.header.stamp = st
+            m.transform = tr
+            set_transform(m, "bench")
+        per_step.append((time.process_time() - s0) / len(FRAMES))
+    return per_step
+
+
+def poses_of(lookup: Callable[[Any], Any], times: list[Any]) -> list[list[float]]:
+    """Each looked-up TransformStamped's translation and rotation, for the agreement check (both sides)."""
+    poses = []
+    for t in times:
+        r = lookup(t).transform
+        poses.append([r.translation.x, r.translation.y, r.translation.z,
+                      r.rotation.x, r.rotation.y, r.rotation.z, r.rotation.w])
+    return poses
+
+
 # ---------------------------------------------------------------------------- data (stdlib only: both sides)
 def make_data(quick: bool) -> dict[str, Any]:
     """The chain's samples, the lookup queries and the steady-state inserts' poses, as plain lists."""
@@ -195,22 +223,9 @@ def peer_main() -> int:
         message_cost = cpu_per_call(build, data["lookups"], 7)
         stamps = [rospy.Time((next_ns + j * MS) // SEC, (next_ns + j * MS) % SEC) for j in range(steps)]
         set_transform = steady.set_transform
-        per_step = []
-        for j in range(steps):
-            st, tr = stamps[j], transforms[j]
-            s0 = time.process_time()
-            for f in FRAMES:
-                m = msgs[f]
-                m.header.stamp = st
-                m.transform = tr
-                set_transform(m, "bench")
-            per_step.append((time.process_time() - s0) / len(FRAMES))
+        per_step = steady_costs(set_transform, msgs, stamps, transforms)
         next_ns += steps * MS
-        poses = []
-        for t in times[:50]:
-            r = chain.lookup_transform_core("map", "tool", t).transform
-            poses.append([r.translation.x, r.translation.y, r.translation.z,
-                          r.rotation.x, r.rotation.y, r.rotation.z, r.rotation.w])
+        poses = poses_of(lambda t: chain.lookup_transform_core("map", "tool", t), times[:50])
         print(json.dumps({"lookup": look, "message": message_cost, "set_transform": _median_of_blocks(per_step),
                           "poses": poses}),
               flush=True)
@@ -277,22 +292,9 @@ class Ours:
         steps = len(self.transforms)
         stamps = [StampMsg(*divmod(self.next_ns + j * MS, SEC)) for j in range(steps)]
         set_transform, msgs, transforms = self.steady.set_transform, self.msgs, self.transforms
-        per_step = []
-        for j in range(steps):
-            st, tr = stamps[j], transforms[j]
-            s0 = time.process_time()
-            for f in FRAMES:
-                m = msgs[f]
-                m.header.stamp = st
-                m.transform = tr
-                set_transform(m, "bench")
-            per_step.append((time.process_time() - s0) / len(FRAMES))
+        per_step = steady_costs(set_transform, msgs, stamps, transforms)
         self.next_ns += steps * MS
-        poses = []
-        for t in times[:50]:
-            r = chain.lookup_transform("map", "tool", t).transform
-            poses.append([r.translation.x, r.translation.y, r.translation.z,
-                          r.rotation.x, r.rotation.y, r.rotation.z, r.rotation.w])
+        poses = poses_of(lambda t: chain.lookup_transform("map", "tool", t), times[:50])
         return {"lookup": look, "core": core_t, "message": message, "set_transform": _median_of_blocks(per_step),
                 "poses": poses}
 
