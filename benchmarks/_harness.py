@@ -99,3 +99,14 @@ def private_roscore() -> Iterator[dict[str, str]]:
             except subprocess.TimeoutExpired:
                 os.killpg(core.pid, signal.SIGKILL)
                 core.wait()
+
+
+def print_wire_table(ours: dict[str, Any], theirs: dict[str, Any], peer: str) -> None:
+    """The throughput, latency and CPU rows of a wire benchmark: robotmodel, the peer, their ratio."""
+    print(f"{'':28}{'robotmodel':>14}{peer:>14}{'ratio':>10}")
+    for key, label, better in (("rate", "throughput msgs/s", "higher"), ("p50_us", "latency p50 us", "lower"),
+                               ("p90_us", "latency p90 us", "lower"),
+                               ("sub_cpu_us_per_msg", "subscriber CPU us/msg", "lower"),
+                               ("pub_cpu_us_per_msg", "publisher CPU us/msg", "lower")):
+        a, b = float(ours[key]), float(theirs[key])
+        print(f"{label:28}{a:14.1f}{b:14.1f}{a / b:10.2f}  ({better} is better)")

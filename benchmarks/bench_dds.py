@@ -63,13 +63,7 @@ def main() -> int:
     ours, theirs = results["robotmodel"], results["rclpy"]
     print(f"{FLOOD} flood messages, {PINGS} pings, one transform (robotmodel: TFMessage on Cyclone DDS; "
           f"rclpy: TransformStamped on Fast DDS)")
-    print(f"{'':28}{'robotmodel':>14}{'rclpy':>14}{'ratio':>10}")
-    for key, label, better in (("rate", "throughput msgs/s", "higher"), ("p50_us", "latency p50 us", "lower"),
-                               ("p90_us", "latency p90 us", "lower"),
-                               ("sub_cpu_us_per_msg", "subscriber CPU us/msg", "lower"),
-                               ("pub_cpu_us_per_msg", "publisher CPU us/msg", "lower")):
-        a, b = float(ours[key]), float(theirs[key])
-        print(f"{label:28}{a:14.1f}{b:14.1f}{a / b:10.2f}  ({better} is better)")
+    _harness.print_wire_table(ours, theirs, "rclpy")
     print(f"received: robotmodel {ours['received']}/{FLOOD} (+{ours['pings']}/{PINGS} pings), "
           f"rclpy {theirs['received']}/{FLOOD} (+{theirs['pings']}/{PINGS} pings); "
           f"rclpy publishes retried after Fast DDS's 100 ms block: {theirs['publish_retries']}")

@@ -40,13 +40,7 @@ def main() -> int:
         results = {impl: run_pair(impl, env) for impl in ("rospy", "robotmodel")}
     ours, theirs = results["robotmodel"], results["rospy"]
     print(f"{FLOOD} flood messages, {PINGS} pings, one-transform TFMessage")
-    print(f"{'':28}{'robotmodel':>14}{'rospy':>14}{'ratio':>10}")
-    for key, label, better in (("rate", "throughput msgs/s", "higher"), ("p50_us", "latency p50 us", "lower"),
-                               ("p90_us", "latency p90 us", "lower"),
-                               ("sub_cpu_us_per_msg", "subscriber CPU us/msg", "lower"),
-                               ("pub_cpu_us_per_msg", "publisher CPU us/msg", "lower")):
-        a, b = float(ours[key]), float(theirs[key])
-        print(f"{label:28}{a:14.1f}{b:14.1f}{a / b:10.2f}  ({better} is better)")
+    _harness.print_wire_table(ours, theirs, "rospy")
     print(f"received: robotmodel {ours['received']}/{FLOOD}, rospy {theirs['received']}/{FLOOD}")
     return 0
 
