@@ -12,6 +12,7 @@ not counted.
 from __future__ import annotations
 
 import threading
+import time
 from collections import deque
 from collections.abc import Sequence
 from types import CodeType
@@ -25,6 +26,7 @@ __all__ = ["TIME_RESET", "HzMeter", "compile_filter", "run_topic_hz"]
 #: What ros2 topic hz prints when its clock reads 0 again (a /clock restarted) with gaps counted.
 TIME_RESET = "time has reset, resetting counters"
 _SECOND_NS = 1_000_000_000
+_POLL_S = 0.1  # how often the graph is read while waiting for the topic
 
 
 class HzMeter:
@@ -81,7 +83,12 @@ def compile_filter(expr: str) -> CodeType:
 def run_topic_hz(topic_name: str, *, window: int = DEFAULT_WINDOW, filter_expr: str | None = None,
                  wall_time: bool = False, use_sim_time: bool = False, connect: Sequence[str] = (),
                  spin_time: float = 0.5, timeout: float | None = None) -> int:
-    """``ros2 topic hz``: print the average rate of ``topic_name`` until stopped (or ``timeout`` s); the exit code."""
+    """``ros2 topic hz``: print the average rate of ``topic_name`` until stopped (or ``timeout`` s); the exit code.
+
+    A topic not published yet is waited for, after ros2's and rostopic's warning line. On the
+    ROS 1 wire the lines are rostopic's: ``subscribed to [TOPIC]`` first, and ``window`` counts
+    the messages in it (the gaps and one, at most ``window``).
+    """
     from robotmodel.bus import Node
     from robotmodel.bus._ros1clock import node_clock
     from robotmodel.signals import stop_on_signals
@@ -93,12 +100,17 @@ def run_topic_hz(topic_name: str, *, window: int = DEFAULT_WINDOW, filter_expr: 
     stop = stop_on_signals()
     lock = threading.Lock()
     failed: list[str] = []
+    deadline = None if timeout is None else time.monotonic() + timeout
     with Node("_robotmodel_topic_hz", connect=list(connect)) as node:
         topic = node.resolve_topic_name(topic_name)
         found = dict(_discover(node, spin_time))
         if topic not in found:
             print(f"WARNING: topic [{topic}] does not appear to be published yet", flush=True)
-            raise BusError(f"topic '{topic}' does not appear to be published yet")
+        while topic not in found:  # as ros2's get_msg_class(blocking=True) and rostopic wait for it
+            if stop.wait(_POLL_S) or (deadline is not None and time.monotonic() > deadline):
+                return 0
+            found = dict(node.get_topic_names_and_types())
+        ros1 = node.context.encoding == "ros1"
         clock = SystemClock() if wall_time else node_clock(node, use_sim_time)
 
         def on_message(m: Any) -> None:
@@ -117,10 +129,12 @@ def run_topic_hz(topic_name: str, *, window: int = DEFAULT_WINDOW, filter_expr: 
             if note:
                 print(note, flush=True)
             if stats is not None:
-                print(stats.text(), flush=True)
+                print((stats._replace(window=min(stats.window + 1, window)) if ros1 else stats).text(), flush=True)
 
         node.create_subscription(found[topic][0], topic, on_message, _echo_qos(node, topic), raw=check is None)
-        stop.wait(timeout)
+        if ros1:
+            print(f"subscribed to [{topic}]", flush=True)
+        stop.wait(None if deadline is None else max(0.0, deadline - time.monotonic()))
     if failed:
         raise BusError(failed[0])
     return 0

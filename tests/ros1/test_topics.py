@@ -7,7 +7,7 @@ from __future__ import annotations
 import logging
 
 import pytest
-from ros1helpers import Ros1World, wait_until
+from ros1helpers import GroupProc, Ros1World, wait_until
 
 from robotmodel.ros1 import message_type, typestore
 
@@ -111,3 +111,28 @@ def _rx(text: str) -> str:
     import re
 
     return re.escape(text)
+
+
+def test_rostopic_hz_as_the_real_rostopic(ros1: Ros1World) -> None:
+    """``robotmodel rostopic hz -w 5`` beside the real ``rostopic hz -w 5``, both started before the topic
+    exists: the same warning, then ``subscribed to [/late]``, then reports whose window counts messages
+    (5 once full) and whose rate is the publisher's (rostopic pub -r 20)."""
+    import re
+    import sys
+
+    ours_env = dict(ros1.env, ROS_VERSION="1")
+    real = ros1.start("rostopic", "hz", "-w", "5", "/late")
+    ours = GroupProc([sys.executable, "-m", "robotmodel.cli.main", "rostopic", "hz", "-w", "5", "/late"], ours_env)
+    ros1.procs.append(ours)
+    for proc in (real, ours):
+        proc.wait_line(r"^WARNING: topic \[/late\] does not appear to be published yet$", 60)
+    ros1.start("rostopic", "pub", "-r", "20", "/late", "std_msgs/String", "data: x")
+    rate = re.compile(r"^average rate: ([\d.]+)$")
+    window = re.compile(r"window: (\d+)$")
+    for proc in (real, ours):
+        wait_until(lambda p=proc: sum(bool(rate.match(ln)) for ln in p.lines) >= 3, 60, "three reports")
+    for proc in (real, ours):
+        lines = [ln for ln in proc.lines if ln.strip()]
+        assert lines[1] == "subscribed to [/late]", lines[:3]
+        assert [int(m[1]) for ln in lines if (m := window.search(ln))][-1] == 5, lines
+        assert abs(float([m[1] for ln in lines if (m := rate.match(ln))][-1]) - 20.0) < 2.0, lines
