@@ -26,7 +26,6 @@ __all__ = ["TIME_RESET", "HzMeter", "compile_filter", "run_topic_hz"]
 #: What ros2 topic hz prints when its clock reads 0 again (a /clock restarted) with gaps counted.
 TIME_RESET = "time has reset, resetting counters"
 _SECOND_NS = 1_000_000_000
-_POLL_S = 0.1  # how often the graph is read while waiting for the topic
 
 
 class HzMeter:
@@ -93,7 +92,7 @@ def run_topic_hz(topic_name: str, *, window: int = DEFAULT_WINDOW, filter_expr: 
     from robotmodel.bus._ros1clock import node_clock
     from robotmodel.signals import stop_on_signals
     from robotmodel.time import SystemClock
-    from robotmodel.topic._tools import _discover, _echo_qos
+    from robotmodel.topic._tools import _echo_qos, wait_for_topic
 
     check = compile_filter(filter_expr) if filter_expr else None
     meter = HzMeter(window)
@@ -103,13 +102,9 @@ def run_topic_hz(topic_name: str, *, window: int = DEFAULT_WINDOW, filter_expr: 
     deadline = None if timeout is None else time.monotonic() + timeout
     with Node("_robotmodel_topic_hz", connect=list(connect)) as node:
         topic = node.resolve_topic_name(topic_name)
-        found = dict(_discover(node, spin_time))
-        if topic not in found:
-            print(f"WARNING: topic [{topic}] does not appear to be published yet", flush=True)
-        while topic not in found:  # as ros2's get_msg_class(blocking=True) and rostopic wait for it
-            if stop.wait(_POLL_S) or (deadline is not None and time.monotonic() > deadline):
-                return 0
-            found = dict(node.get_topic_names_and_types())
+        types = wait_for_topic(node, topic, spin_time, stop, deadline)
+        if types is None:
+            return 0
         ros1 = node.context.encoding == "ros1"
         clock = SystemClock() if wall_time else node_clock(node, use_sim_time)
 
@@ -131,7 +126,7 @@ def run_topic_hz(topic_name: str, *, window: int = DEFAULT_WINDOW, filter_expr: 
             if stats is not None:
                 print((stats._replace(window=min(stats.window + 1, window)) if ros1 else stats).text(), flush=True)
 
-        node.create_subscription(found[topic][0], topic, on_message, _echo_qos(node, topic), raw=check is None)
+        node.create_subscription(types[0], topic, on_message, _echo_qos(node, topic), raw=check is None)
         if ros1:
             print(f"subscribed to [{topic}]", flush=True)
         stop.wait(None if deadline is None else max(0.0, deadline - time.monotonic()))

@@ -10,6 +10,7 @@ from __future__ import annotations
 import itertools
 import math
 import threading
+import time
 from collections import deque
 from collections.abc import Sequence
 from time import monotonic_ns
@@ -63,9 +64,8 @@ def _watch(topic_name: str, window: int, connect: Sequence[str], spin_time: floa
            report: Any, name: str) -> int:
     """Subscribe raw to ``topic_name``; call ``report(list of (t_ns, size))`` every second until stopped."""
     from robotmodel.bus import Node
-    from robotmodel.errors import BusError
     from robotmodel.signals import stop_on_signals
-    from robotmodel.topic._tools import _discover, _echo_qos
+    from robotmodel.topic._tools import _echo_qos, wait_for_topic
 
     stop = stop_on_signals()
     lock = threading.Lock()
@@ -77,11 +77,11 @@ def _watch(topic_name: str, window: int, connect: Sequence[str], spin_time: floa
 
     with Node(name, connect=list(connect)) as node:
         topic = node.resolve_topic_name(topic_name)
-        found = dict(_discover(node, spin_time))
-        if topic not in found:
-            print(f"WARNING: topic [{topic}] does not appear to be published yet", flush=True)
-            raise BusError(f"topic '{topic}' does not appear to be published yet")
-        node.create_subscription(found[topic][0], topic, on_message, _echo_qos(node, topic), raw=True)
+        deadline = None if timeout is None else time.monotonic() + timeout
+        types = wait_for_topic(node, topic, spin_time, stop, deadline)
+        if types is None:
+            return 0
+        node.create_subscription(types[0], topic, on_message, _echo_qos(node, topic), raw=True)
         report_start = monotonic_ns()
         while not stop.wait(1.0):
             with lock:

@@ -2,17 +2,16 @@
 
 from __future__ import annotations
 
+import threading
 import time
 from collections.abc import Sequence
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
-if TYPE_CHECKING:
-    pass
-
-__all__ = ["DEFAULT_SPIN_TIME", "run_topic_list"]
+__all__ = ["DEFAULT_SPIN_TIME", "run_topic_list", "wait_for_topic"]
 
 # ros2cli's direct node spins this long to discover the graph before answering.
 DEFAULT_SPIN_TIME = 0.5
+_POLL_S = 0.1  # how often the graph is read while waiting for a topic
 
 
 def _hidden(name: str) -> bool:
@@ -29,6 +28,23 @@ def _discover(node: Any, spin_time: float) -> list[tuple[str, list[str]]]:
     node.get_topic_names_and_types()  # starts following the graph
     time.sleep(max(0.0, end - time.monotonic()))
     return list(node.get_topic_names_and_types())
+
+
+def wait_for_topic(node: Any, topic: str, spin_time: float, stop: threading.Event,
+                   deadline: float | None = None) -> list[str] | None:
+    """The types of ``topic`` once the graph shows it; None when ``stop`` or the monotonic ``deadline`` came first.
+
+    A topic not published yet gets ros2's and rostopic's warning line, then is waited for, as
+    ``ros2 topic hz|bw`` (``get_msg_class(blocking=True)``) and ``rostopic hz`` wait.
+    """
+    found = dict(_discover(node, spin_time))
+    if topic not in found:
+        print(f"WARNING: topic [{topic}] does not appear to be published yet", flush=True)
+    while topic not in found:
+        if stop.wait(_POLL_S) or (deadline is not None and time.monotonic() > deadline):
+            return None
+        found = dict(node.get_topic_names_and_types())
+    return list(found[topic])
 
 
 def run_topic_list(*, show_types: bool = False, count_topics: bool = False, include_hidden_topics: bool = False,
