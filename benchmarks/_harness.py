@@ -39,6 +39,18 @@ def stop(proc: subprocess.Popen[Any]) -> None:
     proc.wait(10)
 
 
+def interrupt(proc: subprocess.Popen[Any], timeout: float) -> None:
+    """Ctrl-C the child's process group (a clean exit: a master unregisters, a node its topics), SIGKILL if it hangs."""
+    if proc.poll() is not None:
+        return
+    os.killpg(proc.pid, signal.SIGINT)
+    try:
+        proc.wait(timeout)
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        proc.wait()
+
+
 def line(proc: subprocess.Popen[str], prefix: str) -> str:
     """The child's first stdout line starting with ``prefix``; RuntimeError if it ends first."""
     assert proc.stdout is not None
@@ -93,12 +105,7 @@ def private_roscore() -> Iterator[dict[str, str]]:
                 time.sleep(0.2)
             yield env
         finally:
-            os.killpg(core.pid, signal.SIGINT)
-            try:
-                core.wait(15)
-            except subprocess.TimeoutExpired:
-                os.killpg(core.pid, signal.SIGKILL)
-                core.wait()
+            interrupt(core, 15)
 
 
 def print_wire_table(ours: dict[str, Any], theirs: dict[str, Any], peer: str) -> None:

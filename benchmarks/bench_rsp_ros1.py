@@ -19,7 +19,6 @@ from __future__ import annotations
 
 import math
 import os
-import signal
 import statistics
 import subprocess
 import sys
@@ -105,13 +104,7 @@ def run(impl: str, urdf: Path, env: dict[str, str], uri: str) -> float:
                 raise RuntimeError(f"the {impl} robot_state_publisher never published the last stamp")
             return (cpu_s(proc.pid) - cpu0) / N
     finally:
-        if proc.poll() is None:
-            os.killpg(proc.pid, signal.SIGINT)
-            try:
-                proc.wait(10)
-            except subprocess.TimeoutExpired:
-                os.killpg(proc.pid, signal.SIGKILL)
-                proc.wait()
+        _harness.interrupt(proc, 10)
         log.close()
         if impl == "c++":  # its private parameter stays on the server and would reach robotmodel's node
             xmlrpc.client.ServerProxy(uri).deleteParam("/bench", "/robot_state_publisher/publish_frequency")
